@@ -1,0 +1,29 @@
+#pragma once
+// Captures of the final frame: the display image as PNG and the HDR frame as OpenEXR (half
+// float RGBA). The EXR header describes the frame: resolution, camera matrices, sun
+// direction, the settings as text, the adapter and the program version.
+#include "core/Camera.h"
+#include "core/ExrImage.h"
+#include "gpu/Readback.h"
+
+#include <filesystem>
+#include <string>
+
+namespace firmament {
+
+struct CaptureDescription {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec3 directionToSun{0.0f, 1.0f, 0.0f};
+    std::string settings;  // "name = value" lines
+    std::string adapter;
+    int frame = 0;
+};
+
+ExrAttributes captureAttributes(const CaptureDescription& description, int width, int height);
+
+// display: 8-bit RGBA (already sRGB encoded); hdr: RGBA16F. Throws Error.
+void writeCapture(const std::filesystem::path& pngPath, const std::filesystem::path& exrPath,
+                  const ReadbackImage& display, const ReadbackImage& hdr, const CaptureDescription& description);
+
+}  // namespace firmament

@@ -1,0 +1,182 @@
+#include "app/CommandLine.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+namespace firmament {
+
+namespace {
+
+constexpr int kMinSize = 16;
+constexpr int kMaxSize = 16384;
+constexpr int kMaxFrames = 10'000'000;
+
+std::optional<long long> parseInteger(const std::string& text) {
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+    return value;
+}
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+}  // namespace
+
+std::filesystem::path Options::capturePng() const {
+    auto path = *capture;
+    return path.replace_extension(".png");
+}
+
+std::filesystem::path Options::captureExr() const {
+    auto path = *capture;
+    return path.replace_extension(".exr");
+}
+
+ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
+    ParsedCommandLine result;
+    Options& o = result.options;
+    bool hardwareRequested = false, warpRequested = false;
+
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        std::string flag = arguments[i];
+        std::optional<std::string> inlineValue;
+        if (const auto eq = flag.find('='); flag.rfind("--", 0) == 0 && eq != std::string::npos) {
+            inlineValue = flag.substr(eq + 1);
+            flag = flag.substr(0, eq);
+        }
+        auto value = [&]() -> std::optional<std::string> {
+            if (inlineValue) return inlineValue;
+            if (i + 1 < arguments.size()) return arguments[++i];
+            result.error = flag + " needs a value";
+            return std::nullopt;
+        };
+        auto noValue = [&]() {
+            if (inlineValue) result.error = flag + " takes no value";
+            return !inlineValue;
+        };
+
+        if (flag == "--help" || flag == "-h" || flag == "/?") {
+            if (!noValue()) return result;
+            o.help = true;
+        } else if (flag == "--version") {
+            if (!noValue()) return result;
+            o.version = true;
+        } else if (flag == "--headless") {
+            if (!noValue()) return result;
+            o.headless = true;
+        } else if (flag == "--warp") {
+            if (!noValue()) return result;
+            warpRequested = true;
+        } else if (flag == "--hardware") {
+            if (!noValue()) return result;
+            hardwareRequested = true;
+        } else if (flag == "--adapter") {
+            const auto v = value();
+            if (!v) return result;
+            const auto n = parseInteger(*v);
+            if (!n || *n < 0 || *n > 64) {
+                result.error = "--adapter: '" + *v + "' is not an adapter index (0, 1, ...)";
+                return result;
+            }
+            o.adapter = static_cast<unsigned>(*n);
+        } else if (flag == "--frames") {
+            const auto v = value();
+            if (!v) return result;
+            const auto n = parseInteger(*v);
+            if (!n || *n < 1 || *n > kMaxFrames) {
+                result.error = "--frames: '" + *v + "' is not a frame count from 1 to " + std::to_string(kMaxFrames);
+                return result;
+            }
+            o.frames = static_cast<int>(*n);
+        } else if (flag == "--resolution") {
+            const auto v = value();
+            if (!v) return result;
+            const auto x = lowercase(*v).find('x');
+            const auto w = x == std::string::npos ? std::nullopt : parseInteger(v->substr(0, x));
+            const auto h = x == std::string::npos ? std::nullopt : parseInteger(v->substr(x + 1));
+            if (!w || !h) {
+                result.error = "--resolution: '" + *v + "' is not WIDTHxHEIGHT (for example 1280x720)";
+                return result;
+            }
+            if (*w < kMinSize || *h < kMinSize || *w > kMaxSize || *h > kMaxSize) {
+                result.error = "--resolution: " + *v + " is out of range (each side " + std::to_string(kMinSize) +
+                               " to " + std::to_string(kMaxSize) + ")";
+                return result;
+            }
+            o.width = static_cast<int>(*w);
+            o.height = static_cast<int>(*h);
+        } else if (flag == "--vsync") {
+            const auto v = value();
+            if (!v) return result;
+            const auto s = lowercase(*v);
+            if (s != "on" && s != "off") {
+                result.error = "--vsync: '" + *v + "' is not 'on' or 'off'";
+                return result;
+            }
+            o.vsync = s == "on";
+        } else if (flag == "--capture") {
+            const auto v = value();
+            if (!v) return result;
+            const std::filesystem::path path(*v);
+            const auto ext = lowercase(path.extension().string());
+            if (v->empty() || (ext != ".png" && ext != ".exr")) {
+                result.error = "--capture: '" + *v + "' must end in .png or .exr (both files are written)";
+                return result;
+            }
+            o.capture = path;
+        } else if (flag == "--shader-dir") {
+            const auto v = value();
+            if (!v) return result;
+            if (v->empty()) {
+                result.error = "--shader-dir: the folder name is empty";
+                return result;
+            }
+            o.shaderDir = std::filesystem::path(*v);
+        } else {
+            result.error = "unknown option '" + arguments[i] + "'";
+            return result;
+        }
+    }
+
+    if (hardwareRequested && warpRequested) {
+        result.error = "--warp and --hardware exclude each other";
+        return result;
+    }
+    const bool warp = warpRequested || (o.headless && !hardwareRequested && !o.adapter);
+    o.driver = warp ? DriverType::Warp : DriverType::Hardware;
+    if (warp && o.adapter) {
+        result.error = "--warp and --adapter exclude each other";
+        return result;
+    }
+    return result;
+}
+
+std::string usageText() {
+    return R"(Usage: firmament [options]
+
+Real-time outdoor renderer (Direct3D 11).
+
+Device
+  --warp                 use the WARP software rasterizer
+  --hardware             use the default hardware adapter (also when headless)
+  --adapter N            use DXGI adapter N
+Running
+  --headless             no visible window; WARP unless --hardware or --adapter;
+                         renders --frames frames (default 30), prints GPU times
+  --frames N             stop after N frames
+  --resolution WxH       frame size (default 1280x720; 16 to 16384 a side)
+  --vsync on|off         wait for vertical blank when presenting (default on)
+  --capture PATH         after the last frame write PATH.png (display) and
+                         PATH.exr (HDR, half float, with the settings in its header)
+  --shader-dir DIR       compiled shaders (default: 'shaders' beside the program)
+  --version              print the version
+  --help                 print this text
+Exit codes: 0 success, 1 runtime error, 2 bad command line.
+)";
+}
+
+}  // namespace firmament

@@ -1,0 +1,54 @@
+// firmament.exe: parses the command line, runs the App, and turns every error into one
+// message and a non-zero exit code (1 runtime error, 2 bad command line).
+#include "app/App.h"
+#include "app/CommandLine.h"
+#include "core/Error.h"
+#include "core/Log.h"
+#include "FirmamentVersion.h"
+
+#include <shellapi.h>
+#include <windows.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::vector<std::string> commandLineArguments() {
+    int count = 0;
+    wchar_t** wide = CommandLineToArgvW(GetCommandLineW(), &count);
+    std::vector<std::string> arguments;
+    for (int i = 1; i < count; ++i) arguments.push_back(firmament::narrow(wide[i]));
+    LocalFree(wide);
+    return arguments;
+}
+
+}  // namespace
+
+int main() {
+    using namespace firmament;
+    const ParsedCommandLine parsed = parseCommandLine(commandLineArguments());
+    if (!parsed.error.empty()) {
+        log::error(parsed.error + " (firmament --help lists the options)");
+        return 2;
+    }
+    if (parsed.options.help) {
+        std::fputs(usageText().c_str(), stdout);
+        return 0;
+    }
+    if (parsed.options.version) {
+        std::printf("firmament %s\n", kFirmamentVersion);
+        return 0;
+    }
+    try {
+        App app(parsed.options);
+        return app.run();
+    } catch (const Error& e) {
+        log::error(e.what());
+    } catch (const std::exception& e) {
+        log::error(std::string("unexpected failure: ") + e.what());
+    }
+    return 1;
+}

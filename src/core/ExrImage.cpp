@@ -1,0 +1,114 @@
+#include "core/ExrImage.h"
+
+#include "core/Error.h"
+
+#include <ImfFloatAttribute.h>
+#include <ImfHeader.h>
+#include <ImfIntAttribute.h>
+#include <ImfMatrixAttribute.h>
+#include <ImfRgbaFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
+
+#include <exception>
+
+namespace firmament {
+
+namespace {
+
+Imath::M44f toImath(const glm::mat4& m) {
+    Imath::M44f out;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) out[i][j] = m[i][j];
+    return out;
+}
+
+glm::mat4 fromImath(const Imath::M44f& m) {
+    glm::mat4 out;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) out[i][j] = m[i][j];
+    return out;
+}
+
+void insertAttribute(Imf::Header& header, const std::string& name, const ExrAttribute& value) {
+    std::visit(
+        [&](const auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, std::string>) header.insert(name, Imf::StringAttribute(v));
+            else if constexpr (std::is_same_v<T, float>) header.insert(name, Imf::FloatAttribute(v));
+            else if constexpr (std::is_same_v<T, int>) header.insert(name, Imf::IntAttribute(v));
+            else if constexpr (std::is_same_v<T, glm::vec3>) header.insert(name, Imf::V3fAttribute(Imath::V3f(v.x, v.y, v.z)));
+            else if constexpr (std::is_same_v<T, glm::ivec2>) header.insert(name, Imf::V2iAttribute(Imath::V2i(v.x, v.y)));
+            else header.insert(name, Imf::M44fAttribute(toImath(v)));
+        },
+        value);
+}
+
+ExrAttributes readAttributes(const Imf::Header& header) {
+    ExrAttributes out;
+    for (auto it = header.begin(); it != header.end(); ++it) {
+        const Imf::Attribute& a = it.attribute();
+        if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&a)) out[it.name()] = s->value();
+        else if (auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a)) out[it.name()] = f->value();
+        else if (auto* n = dynamic_cast<const Imf::IntAttribute*>(&a)) out[it.name()] = n->value();
+        else if (auto* v3 = dynamic_cast<const Imf::V3fAttribute*>(&a))
+            out[it.name()] = glm::vec3(v3->value().x, v3->value().y, v3->value().z);
+        else if (auto* v2 = dynamic_cast<const Imf::V2iAttribute*>(&a))
+            out[it.name()] = glm::ivec2(v2->value().x, v2->value().y);
+        else if (auto* m = dynamic_cast<const Imf::M44fAttribute*>(&a)) out[it.name()] = fromImath(m->value());
+    }
+    return out;
+}
+
+}  // namespace
+
+void writeExr(const std::filesystem::path& path, const HalfRgbaImage& image, const ExrAttributes& attributes) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.halfBits.size() != static_cast<size_t>(image.width) * image.height * 4)
+        throw Error("writeExr: image size does not match its pixel data");
+    try {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, value] : attributes) insertAttribute(header, name, value);
+
+        std::vector<Imf::Rgba> pixels(static_cast<size_t>(image.width) * image.height);
+        for (size_t i = 0; i < pixels.size(); ++i) {
+            pixels[i].r.setBits(image.halfBits[i * 4 + 0]);
+            pixels[i].g.setBits(image.halfBits[i * 4 + 1]);
+            pixels[i].b.setBits(image.halfBits[i * 4 + 2]);
+            pixels[i].a.setBits(image.halfBits[i * 4 + 3]);
+        }
+        Imf::RgbaOutputFile file(path.string().c_str(), header, Imf::WRITE_RGBA);
+        file.setFrameBuffer(pixels.data(), 1, static_cast<size_t>(image.width));
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {
+        throw Error("cannot write the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
+ExrFile readExr(const std::filesystem::path& path) {
+    try {
+        Imf::RgbaInputFile file(path.string().c_str());
+        const Imath::Box2i window = file.dataWindow();
+        ExrFile out;
+        out.image.width = window.max.x - window.min.x + 1;
+        out.image.height = window.max.y - window.min.y + 1;
+        std::vector<Imf::Rgba> pixels(static_cast<size_t>(out.image.width) * out.image.height);
+        file.setFrameBuffer(pixels.data() - window.min.x - window.min.y * out.image.width, 1,
+                            static_cast<size_t>(out.image.width));
+        file.readPixels(window.min.y, window.max.y);
+        out.image.halfBits.resize(pixels.size() * 4);
+        for (size_t i = 0; i < pixels.size(); ++i) {
+            out.image.halfBits[i * 4 + 0] = pixels[i].r.bits();
+            out.image.halfBits[i * 4 + 1] = pixels[i].g.bits();
+            out.image.halfBits[i * 4 + 2] = pixels[i].b.bits();
+            out.image.halfBits[i * 4 + 3] = pixels[i].a.bits();
+        }
+        out.attributes = readAttributes(file.header());
+        return out;
+    } catch (const std::exception& e) {
+        throw Error("cannot read the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
+}  // namespace firmament

@@ -1,0 +1,79 @@
+#include "gpu/Device.h"
+
+#include "core/Error.h"
+#include "gpu/Hresult.h"
+
+#include <vector>
+
+namespace firmament {
+
+std::string narrow(const wchar_t* text) {
+    const int size = WideCharToMultiByte(CP_UTF8, 0, text, -1, nullptr, 0, nullptr, nullptr);
+    if (size <= 1) return {};
+    std::string out(static_cast<size_t>(size - 1), '\0');
+    WideCharToMultiByte(CP_UTF8, 0, text, -1, out.data(), size, nullptr, nullptr);
+    return out;
+}
+
+std::string featureLevelName(D3D_FEATURE_LEVEL level) {
+    switch (level) {
+        case D3D_FEATURE_LEVEL_11_0: return "11_0";
+        case D3D_FEATURE_LEVEL_11_1: return "11_1";
+        case D3D_FEATURE_LEVEL_12_0: return "12_0";
+        case D3D_FEATURE_LEVEL_12_1: return "12_1";
+        default: return "below 11_0";
+    }
+}
+
+Device::Device(const DeviceOptions& options) {
+    check(CreateDXGIFactory1(IID_PPV_ARGS(&factory_)), "CreateDXGIFactory1");
+
+    ComPtr<IDXGIAdapter1> adapter;
+    D3D_DRIVER_TYPE driverType = options.driver == DriverType::Warp ? D3D_DRIVER_TYPE_WARP : D3D_DRIVER_TYPE_HARDWARE;
+    if (options.adapterIndex) {
+        if (factory_->EnumAdapters1(*options.adapterIndex, &adapter) == DXGI_ERROR_NOT_FOUND) {
+            std::string list;
+            ComPtr<IDXGIAdapter1> each;
+            for (UINT i = 0; factory_->EnumAdapters1(i, &each) != DXGI_ERROR_NOT_FOUND; ++i) {
+                DXGI_ADAPTER_DESC1 desc{};
+                each->GetDesc1(&desc);
+                list += "\n  " + std::to_string(i) + ": " + narrow(desc.Description);
+            }
+            throw Error("--adapter " + std::to_string(*options.adapterIndex) +
+                        ": no such adapter; the adapters are:" + (list.empty() ? " none" : list));
+        }
+        driverType = D3D_DRIVER_TYPE_UNKNOWN;  // required when an adapter is given
+    }
+
+    UINT flags = D3D11_CREATE_DEVICE_BGRA_SUPPORT;
+    if (options.debugLayer) flags |= D3D11_CREATE_DEVICE_DEBUG;
+    const D3D_FEATURE_LEVEL levels[] = {D3D_FEATURE_LEVEL_11_1, D3D_FEATURE_LEVEL_11_0};
+    HRESULT hr = D3D11CreateDevice(adapter.Get(), driverType, nullptr, flags, levels, 2, D3D11_SDK_VERSION,
+                                   &device_, &featureLevel_, &context_);
+    if (hr == E_INVALIDARG)  // runtimes that do not know 11_1
+        hr = D3D11CreateDevice(adapter.Get(), driverType, nullptr, flags, levels + 1, 1, D3D11_SDK_VERSION,
+                               &device_, &featureLevel_, &context_);
+    check(hr, options.driver == DriverType::Warp ? "D3D11CreateDevice (WARP)" : "D3D11CreateDevice");
+
+    ComPtr<IDXGIDevice> dxgiDevice;
+    ComPtr<IDXGIAdapter> deviceAdapter;
+    if (SUCCEEDED(device_.As(&dxgiDevice)) && SUCCEEDED(dxgiDevice->GetAdapter(&deviceAdapter))) {
+        DXGI_ADAPTER_DESC desc{};
+        deviceAdapter->GetDesc(&desc);
+        adapterName_ = narrow(desc.Description);
+    }
+
+    ComPtr<IDXGIFactory5> factory5;
+    if (SUCCEEDED(factory_.As(&factory5))) {
+        BOOL allowTearing = FALSE;
+        if (SUCCEEDED(factory5->CheckFeatureSupport(DXGI_FEATURE_PRESENT_ALLOW_TEARING, &allowTearing,
+                                                    sizeof allowTearing)))
+            tearingSupported_ = allowTearing == TRUE;
+    }
+}
+
+std::string Device::describe() const {
+    return adapterName_ + " (feature level " + featureLevelName(featureLevel_) + ")";
+}
+
+}  // namespace firmament

@@ -1,0 +1,40 @@
+#pragma once
+// The Direct3D 11 device and its immediate context, created as DeviceOptions asks.
+#include "gpu/DeviceOptions.h"
+
+#include <d3d11_1.h>
+#include <dxgi1_5.h>
+#include <wrl/client.h>
+
+#include <string>
+
+namespace firmament {
+
+using Microsoft::WRL::ComPtr;
+
+class Device {
+public:
+    explicit Device(const DeviceOptions& options);  // throws Error
+
+    ID3D11Device* device() const { return device_.Get(); }
+    ID3D11DeviceContext* context() const { return context_.Get(); }
+    IDXGIFactory2* factory() const { return factory_.Get(); }
+
+    const std::string& adapterName() const { return adapterName_; }
+    D3D_FEATURE_LEVEL featureLevel() const { return featureLevel_; }
+    bool tearingSupported() const { return tearingSupported_; }
+    std::string describe() const;  // "adapter (feature level 11_1)"
+
+private:
+    ComPtr<IDXGIFactory2> factory_;
+    ComPtr<ID3D11Device> device_;
+    ComPtr<ID3D11DeviceContext> context_;
+    std::string adapterName_;
+    D3D_FEATURE_LEVEL featureLevel_ = D3D_FEATURE_LEVEL_11_0;
+    bool tearingSupported_ = false;
+};
+
+std::string featureLevelName(D3D_FEATURE_LEVEL level);
+std::string narrow(const wchar_t* text);  // UTF-16 to UTF-8
+
+}  // namespace firmament

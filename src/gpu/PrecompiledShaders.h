@@ -1,0 +1,26 @@
+#pragma once
+// The DXBC the build compiled: a folder of .cso files and manifest.txt mapping each
+// permutation's key to its file ("key<TAB>file" lines).
+#include "gpu/ShaderCompiler.h"
+
+#include <filesystem>
+#include <map>
+
+namespace firmament {
+
+class PrecompiledShaders final : public ShaderCompiler {
+public:
+    explicit PrecompiledShaders(std::filesystem::path folder);  // throws Error if the folder or manifest is missing
+
+    std::string name() const override { return "precompiled (" + folder_.string() + ")"; }
+    CompileResult compile(const ShaderKey& key) override;
+
+    const std::filesystem::path& folder() const { return folder_; }
+    size_t size() const { return files_.size(); }
+
+private:
+    std::filesystem::path folder_;
+    std::map<std::string, std::string> files_;  // key id -> .cso file name
+};
+
+}  // namespace firmament

@@ -1,0 +1,22 @@
+#pragma once
+// Writes the HDR frame to the 8-bit output target, clamped and sRGB encoded
+// (shaders/postfx/display_encode.hlsl). Tone mapping will take its place in the frame.
+#include "gpu/ShaderLibrary.h"
+
+#include <d3d11.h>
+
+namespace firmament {
+
+class DisplayEncodePass {
+public:
+    explicit DisplayEncodePass(ID3D11Device* device);
+
+    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11ShaderResourceView* hdrFrame,
+                ID3D11RenderTargetView* output, int width, int height);
+
+private:
+    ComPtr<ID3D11RasterizerState> rasterizer_;
+    ComPtr<ID3D11DepthStencilState> noDepth_;
+};
+
+}  // namespace firmament

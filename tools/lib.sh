@@ -1,0 +1,94 @@
+# Shared helpers for the tools/ scripts. Sourced, never run.
+#
+# Everything Firmament needs on Linux lives in one Debian sid sysroot inside a cache folder
+# outside the checkout. Commands run inside it through bubblewrap, so nothing stays mounted
+# or running after they end (see ../shared/design/platform.md).
+
+set -euo pipefail
+
+FIRMAMENT_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+FIRMAMENT_CACHE=${FIRMAMENT_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/firmament}
+FIRMAMENT_MIRROR=${FIRMAMENT_MIRROR:-http://deb.debian.org/debian}
+
+log() { printf '[firmament] %s\n' "$*" >&2; }
+die() { printf '[firmament] error: %s\n' "$*" >&2; exit 1; }
+
+# step "description" command...: runs a command, printing what it does and how long it took.
+step() {
+    local what=$1; shift
+    local start=$SECONDS
+    log "$what ..."
+    "$@"
+    log "$what: done in $((SECONDS - start)) s"
+}
+
+# The sysroot's key: a hash of the package list and the script that makes it. A change of
+# either gives a new sysroot (the old one is removed once the new one is complete).
+sysroot_key() {
+    cat "$FIRMAMENT_ROOT/tools/sysroot/packages.txt" "$FIRMAMENT_ROOT/tools/sysroot/create" |
+        sha256sum | cut -c1-12
+}
+
+# The third-party prefix's key: a change of the script that cross-builds it, or of the
+# toolchain file, rebuilds the prefix inside the same sysroot.
+third_party_key() {
+    cat "$FIRMAMENT_ROOT/tools/sysroot/build-third-party" \
+        "$FIRMAMENT_ROOT/cmake/toolchains/mingw-w64-posix.cmake" |
+        sha256sum | cut -c1-12
+}
+
+sysroot_ready() { [ "$(cat "$(sysroot_dir)/.firmament-complete" 2>/dev/null)" = "$(third_party_key)" ]; }
+
+sysroot_dir() { printf '%s/sysroot-%s' "$FIRMAMENT_CACHE" "$(sysroot_key)"; }
+
+# in_sysroot [--display] CMD...: runs CMD inside the sysroot with the checkout at /src.
+# --unshare-pid and --die-with-parent end every process started inside (Xvfb, wineserver)
+# together with the command, also on failure or Ctrl-C.
+in_sysroot() {
+    local pass_display=0
+    if [ "${1:-}" = "--display" ]; then pass_display=1; shift; fi
+    local root
+    root=$(sysroot_dir)
+    sysroot_ready || die "sysroot $root is not complete: run tools/sysroot/create"
+    local args=(
+        --bind "$root" /
+        --proc /proc --dev /dev --tmpfs /tmp
+        --ro-bind /etc/resolv.conf /etc/resolv.conf
+        --bind "$FIRMAMENT_ROOT" /src
+        --unshare-pid --die-with-parent
+        --chdir /src
+        --setenv HOME /root
+        --setenv PATH /usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin
+        --setenv LANG C.UTF-8
+        --unsetenv DISPLAY --unsetenv XAUTHORITY
+    )
+    if [ "$pass_display" = 1 ] && [ -n "${DISPLAY:-}" ]; then
+        args+=(--bind /tmp/.X11-unix /tmp/.X11-unix --setenv DISPLAY "$DISPLAY")
+        if [ -n "${XAUTHORITY:-}" ] && [ -f "$XAUTHORITY" ]; then
+            args+=(--ro-bind "$XAUTHORITY" /tmp/.Xauthority --setenv XAUTHORITY /tmp/.Xauthority)
+        fi
+    fi
+    [ -t 0 ] || args+=(--new-session)
+    bwrap "${args[@]}" "$@"
+}
+
+require_root() {
+    [ "$(id -u)" = 0 ] || die "this needs root (debootstrap and bubblewrap mount file systems); run it as root"
+}
+
+# Installs a host package from the host's own archive (the only change made to the host).
+require_host_tool() {
+    local tool=$1 package=$2
+    command -v "$tool" >/dev/null 2>&1 && return 0
+    require_root
+    log "installing $package from the host's archive"
+    apt-get update -qq >/dev/null || die "apt-get update failed: is the Debian archive reachable?"
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$package" >/dev/null ||
+        die "could not install $package from the host's archive"
+}
+
+# Makes sure the sysroot exists, creating it when missing (idempotent).
+ensure_sysroot() {
+    require_host_tool bwrap bubblewrap
+    sysroot_ready || "$FIRMAMENT_ROOT/tools/sysroot/create"
+}
