@@ -1,0 +1,64 @@
+// Bad input to firmament.exe: a message that names the problem and a non-zero exit code
+// (2 for the command line, 1 for what is found at run time), never a crash.
+#include "support/Process.h"
+#include "support/TestPaths.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace firmament::test {
+namespace {
+
+std::wstring firmamentExe() { return (executableFolder() / "firmament.exe").wstring(); }
+
+void expectFailure(const std::vector<std::wstring>& arguments, unsigned long exitCode, const std::string& message) {
+    const ProcessResult run = runProcess(firmamentExe(), arguments);
+    EXPECT_EQ(run.exitCode, exitCode) << run.output;
+    EXPECT_NE(run.output.find("error: "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << "expected '" << message << "' in: " << run.output;
+}
+
+TEST(BadInput, UnknownOption) { expectFailure({L"--headless", L"--bogus"}, 2, "unknown option '--bogus'"); }
+
+TEST(BadInput, MalformedResolution) {
+    expectFailure({L"--headless", L"--resolution", L"1920by1080"}, 2, "--resolution: '1920by1080' is not WIDTHxHEIGHT");
+    expectFailure({L"--headless", L"--resolution", L"4x4"}, 2, "out of range");
+}
+
+TEST(BadInput, UnwritableCapturePath) {
+    // The capture's folder would have to be created inside a regular file.
+    const auto blocker = std::filesystem::temp_directory_path() / "firmament-blocker-file";
+    std::ofstream(blocker) << "not a folder";
+    expectFailure({L"--headless", L"--frames", L"1", L"--capture", (blocker / L"shot.png").wstring()}, 1,
+                  "firmament-blocker-file");
+    std::filesystem::remove(blocker);
+}
+
+TEST(BadInput, CaptureWithAnUnknownExtension) {
+    expectFailure({L"--headless", L"--capture", L"shot.bmp"}, 2, "must end in .png or .exr");
+}
+
+TEST(BadInput, MissingShaderFolder) {
+    expectFailure({L"--headless", L"--frames", L"1", L"--shader-dir", L"no-such-folder"}, 1,
+                  "shader folder 'no-such-folder' does not exist");
+}
+
+TEST(BadInput, ShaderFolderWithoutManifest) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-empty-shaders";
+    std::filesystem::create_directories(folder);
+    expectFailure({L"--headless", L"--frames", L"1", L"--shader-dir", folder.wstring()}, 1, "has no manifest.txt");
+    std::filesystem::remove_all(folder);
+}
+
+TEST(GoodInput, HelpAndVersionExitWithZero) {
+    const ProcessResult help = runProcess(firmamentExe(), {L"--help"});
+    EXPECT_EQ(help.exitCode, 0u);
+    EXPECT_NE(help.output.find("Usage: firmament"), std::string::npos) << help.output;
+    const ProcessResult version = runProcess(firmamentExe(), {L"--version"});
+    EXPECT_EQ(version.exitCode, 0u);
+    EXPECT_NE(version.output.find("firmament 0."), std::string::npos) << version.output;
+}
+
+}  // namespace
+}  // namespace firmament::test

@@ -1,0 +1,56 @@
+// The shader library and the build's manifest: every program permutation loads, and a
+// missing folder, manifest or permutation is an error that says which.
+#include "WarpDevice.h"
+#include "core/Error.h"
+
+#include <fstream>
+
+namespace firmament::test {
+namespace {
+
+TEST_F(WarpDevice, EveryPermutationInTheProgramsManifestCreatesAShader) {
+    std::ifstream manifest(productShaders() / "manifest.txt");
+    ASSERT_TRUE(manifest) << "no manifest in " << productShaders().string();
+    std::string line;
+    int loaded = 0;
+    while (std::getline(manifest, line)) {
+        const std::string id = line.substr(0, line.find('\t'));
+        // Split "file|entry|profile|defines" back into a key and load it by that key.
+        ShaderKey key;
+        size_t start = 0, bar = 0;
+        std::string* fields[3] = {&key.file, &key.entry, &key.profile};
+        for (auto* field : fields) {
+            bar = id.find('|', start);
+            *field = id.substr(start, bar - start);
+            start = bar + 1;
+        }
+        const std::string defines = id.substr(start);
+        for (size_t at = 0; at < defines.size();) {
+            const size_t comma = std::min(defines.find(',', at), defines.size());
+            key.defines.push_back(defines.substr(at, comma - at));
+            at = comma + 1;
+        }
+        ASSERT_EQ(key.id(), id);
+        EXPECT_FALSE(productShaderLibrary->bytecode(key).empty()) << id;
+        ++loaded;
+    }
+    EXPECT_GE(loaded, 2);
+    EXPECT_EQ(productShaderLibrary->size(), static_cast<size_t>(loaded));
+}
+
+TEST_F(WarpDevice, MissingPermutationNamesItsKey) {
+    try {
+        testShaderLibrary->computeShader({"compute/transmittance.hlsl", "main", "cs_5_0", {"SCALE=7"}});
+        FAIL() << "a permutation the build did not make was found";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("compute/transmittance.hlsl|main|cs_5_0|SCALE=7"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PrecompiledShaders, MissingFolderOrManifestIsAnError) {
+    EXPECT_THROW(PrecompiledShaders{executableFolder() / "no-such-shader-folder"}, Error);
+    EXPECT_THROW(PrecompiledShaders{executableFolder()}, Error);  // a folder without manifest.txt
+}
+
+}  // namespace
+}  // namespace firmament::test

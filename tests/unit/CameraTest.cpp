@@ -1,0 +1,55 @@
+// Camera matrices against Direct3D's conventions: left-handed, depth 0 at near, 1 at far.
+#include "core/Camera.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace firmament {
+namespace {
+
+glm::vec3 project(const glm::mat4& m, glm::vec3 p) {
+    const glm::vec4 clip = m * glm::vec4(p, 1.0f);
+    return glm::vec3(clip) / clip.w;
+}
+
+TEST(Camera, NearAndFarPlanesMapToDepthZeroAndOne) {
+    Camera camera;
+    camera.position = {0.0f, 0.0f, 0.0f};
+    camera.nearPlane = 0.5f;
+    camera.farPlane = 1000.0f;
+    const glm::mat4 viewProjection = camera.projection(16.0f / 9.0f) * camera.view();
+    EXPECT_NEAR(project(viewProjection, {0, 0, 0.5f}).z, 0.0f, 1e-6f);
+    EXPECT_NEAR(project(viewProjection, {0, 0, 1000.0f}).z, 1.0f, 1e-5f);
+}
+
+TEST(Camera, VerticalFieldOfViewReachesTheTopEdge) {
+    Camera camera;
+    camera.position = {0.0f, 0.0f, 0.0f};
+    const float halfFov = camera.verticalFovRadians * 0.5f;
+    const glm::mat4 viewProjection = camera.projection(2.0f) * camera.view();
+    // A point at the top edge of the view frustum at distance 10 lands at clip-space y = 1.
+    EXPECT_NEAR(project(viewProjection, {0.0f, 10.0f * std::tan(halfFov), 10.0f}).y, 1.0f, 1e-5f);
+    // x is right (left-handed): a point to the right has positive x.
+    EXPECT_GT(project(viewProjection, {1.0f, 0.0f, 10.0f}).x, 0.0f);
+}
+
+TEST(Camera, YawAndPitchTurnTheForwardVector) {
+    Camera camera;
+    camera.yawRadians = 1.5707963f;  // 90 degrees: looks along +x
+    EXPECT_NEAR(camera.forward().x, 1.0f, 1e-6f);
+    camera.pitchRadians = 0.5f;
+    EXPECT_NEAR(camera.forward().y, std::sin(0.5f), 1e-6f);
+    EXPECT_NEAR(glm::length(camera.forward()), 1.0f, 1e-6f);
+}
+
+TEST(Camera, SunDirectionFromElevationAndAzimuth) {
+    const glm::vec3 zenith = directionFromElevationAzimuth(1.5707963f, 0.0f);
+    EXPECT_NEAR(zenith.y, 1.0f, 1e-6f);
+    const glm::vec3 east = directionFromElevationAzimuth(0.0f, 1.5707963f);
+    EXPECT_NEAR(east.x, 1.0f, 1e-6f);
+    EXPECT_NEAR(east.y, 0.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace firmament

@@ -1,0 +1,77 @@
+// Command-line parsing: values, defaults, and one clear message for each kind of bad input.
+#include "app/CommandLine.h"
+
+#include <gtest/gtest.h>
+
+namespace firmament {
+namespace {
+
+ParsedCommandLine parse(std::vector<std::string> args) { return parseCommandLine(args); }
+
+void expectError(std::vector<std::string> args, const std::string& mustMention) {
+    const ParsedCommandLine p = parse(args);
+    EXPECT_FALSE(p.error.empty()) << "no error for " << args.front();
+    EXPECT_NE(p.error.find(mustMention), std::string::npos) << "'" << p.error << "' should mention '" << mustMention << "'";
+}
+
+TEST(CommandLine, DefaultsAreAWindowOnTheHardwareAdapter) {
+    const ParsedCommandLine p = parse({});
+    ASSERT_TRUE(p.error.empty());
+    EXPECT_FALSE(p.options.headless);
+    EXPECT_EQ(p.options.driver, DriverType::Hardware);
+    EXPECT_EQ(p.options.width, 1280);
+    EXPECT_EQ(p.options.height, 720);
+    EXPECT_TRUE(p.options.vsync);
+    EXPECT_EQ(p.options.frameCount(), 0);  // until the window is closed
+}
+
+TEST(CommandLine, HeadlessUsesWarpAndRendersThirtyFramesByDefault) {
+    const ParsedCommandLine p = parse({"--headless"});
+    ASSERT_TRUE(p.error.empty());
+    EXPECT_EQ(p.options.driver, DriverType::Warp);
+    EXPECT_EQ(p.options.frameCount(), 30);
+    EXPECT_EQ(parse({"--headless", "--hardware"}).options.driver, DriverType::Hardware);
+    EXPECT_EQ(parse({"--headless", "--adapter", "1"}).options.driver, DriverType::Hardware);
+}
+
+TEST(CommandLine, ParsesEveryValueInBothSpellings) {
+    const ParsedCommandLine p = parse({"--frames", "12", "--resolution=320x180", "--vsync", "off", "--capture=out/a.png",
+                                       "--shader-dir", "s", "--adapter=2"});
+    ASSERT_TRUE(p.error.empty()) << p.error;
+    EXPECT_EQ(p.options.frameCount(), 12);
+    EXPECT_EQ(p.options.width, 320);
+    EXPECT_EQ(p.options.height, 180);
+    EXPECT_FALSE(p.options.vsync);
+    EXPECT_EQ(p.options.capturePng(), std::filesystem::path("out/a.png"));
+    EXPECT_EQ(p.options.captureExr(), std::filesystem::path("out/a.exr"));
+    EXPECT_EQ(*p.options.shaderDir, std::filesystem::path("s"));
+    EXPECT_EQ(*p.options.adapter, 2u);
+}
+
+TEST(CommandLine, BadInputNamesTheProblem) {
+    expectError({"--fly-to-the-moon"}, "unknown option '--fly-to-the-moon'");
+    expectError({"--resolution", "1280"}, "WIDTHxHEIGHT");
+    expectError({"--resolution", "axb"}, "WIDTHxHEIGHT");
+    expectError({"--resolution", "1280x-5"}, "out of range");
+    expectError({"--resolution", "8x8"}, "out of range");
+    expectError({"--resolution", "99999x720"}, "out of range");
+    expectError({"--frames", "0"}, "--frames");
+    expectError({"--frames", "ten"}, "--frames");
+    expectError({"--frames"}, "needs a value");
+    expectError({"--capture", "shot.jpg"}, ".png or .exr");
+    expectError({"--vsync", "maybe"}, "'on' or 'off'");
+    expectError({"--adapter", "-1"}, "adapter index");
+    expectError({"--headless=yes"}, "takes no value");
+    expectError({"--warp", "--hardware"}, "exclude each other");
+    expectError({"--warp", "--adapter", "0"}, "exclude each other");
+}
+
+TEST(CommandLine, UsageListsEveryOption) {
+    const std::string usage = usageText();
+    for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
+                               "--capture", "--shader-dir", "--version", "--help"})
+        EXPECT_NE(usage.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace firmament

@@ -1,0 +1,78 @@
+// OpenEXR writing and reading: pixel values bit for bit and every header attribute type.
+#include "core/Error.h"
+#include "core/ExrImage.h"
+#include "core/FileIO.h"
+
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+
+namespace firmament {
+namespace {
+
+std::filesystem::path tempPath(const char* name) { return std::filesystem::temp_directory_path() / name; }
+
+HalfRgbaImage rampImage(int width, int height) {
+    HalfRgbaImage image{width, height, {}};
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            // HDR values over many octaves, negative and zero included.
+            const float values[4] = {static_cast<float>(x) * 37.5f, std::ldexp(1.0f, y - 8), -0.25f * x, y == 0 ? 0.0f : 1.0f};
+            for (float v : values) image.halfBits.push_back(Imath::half(v).bits());
+        }
+    return image;
+}
+
+TEST(ExrImage, PixelsAndAttributesRoundTrip) {
+    const auto path = tempPath("firmament-exr-test.exr");
+    const HalfRgbaImage image = rampImage(13, 11);
+    glm::mat4 matrix(0.0f);
+    for (int i = 0; i < 16; ++i) matrix[i / 4][i % 4] = static_cast<float>(i) - 7.5f;
+    const ExrAttributes attributes{
+        {"test.text", std::string("line one\nline two = 2")},
+        {"test.float", 0.18f},
+        {"test.int", -42},
+        {"test.vector", glm::vec3(0.25f, -1.0f, 3.5f)},
+        {"test.size", glm::ivec2(13, 11)},
+        {"test.matrix", matrix},
+    };
+    writeExr(path, image, attributes);
+    const ExrFile file = readExr(path);
+    std::filesystem::remove(path);
+
+    EXPECT_EQ(file.image.width, 13);
+    EXPECT_EQ(file.image.height, 11);
+    EXPECT_EQ(file.image.halfBits, image.halfBits);
+    for (const auto& [name, value] : attributes) {
+        ASSERT_TRUE(file.attributes.count(name)) << name;
+        EXPECT_EQ(file.attributes.at(name), value) << name;
+    }
+    // The matrix keeps glm's element order (m[column][row]).
+    EXPECT_EQ(std::get<glm::mat4>(file.attributes.at("test.matrix"))[2][3], 11.0f - 7.5f);
+}
+
+TEST(ExrImage, MissingAndCorruptFilesAreErrorsNamingThePath) {
+    const auto missing = tempPath("firmament-no-such-file.exr");
+    try {
+        readExr(missing);
+        FAIL() << "no error for a missing file";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("firmament-no-such-file.exr"), std::string::npos) << e.what();
+    }
+
+    const auto corrupt = tempPath("firmament-corrupt.exr");
+    writeExr(corrupt, rampImage(4, 4), {});
+    auto bytes = readFileBytes(corrupt);
+    bytes.resize(bytes.size() / 2);
+    writeFileBytes(corrupt, bytes);
+    EXPECT_THROW(readExr(corrupt), Error);
+    std::filesystem::remove(corrupt);
+}
+
+TEST(ExrImage, ImageSizeMismatchIsRejected) {
+    HalfRgbaImage image = rampImage(4, 4);
+    image.halfBits.pop_back();
+    EXPECT_THROW(writeExr(tempPath("firmament-bad.exr"), image, {}), Error);
+}
+
+}  // namespace
+}  // namespace firmament
