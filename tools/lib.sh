@@ -7,7 +7,7 @@
 set -euo pipefail
 
 FIRMAMENT_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-FIRMAMENT_CACHE=${FIRMAMENT_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/firmament}
+FIRMAMENT_CACHE=${FIRMAMENT_CACHE:-${XDG_CACHE_HOME:-${HOME:-/var/cache}/.cache}/firmament}
 FIRMAMENT_MIRROR=${FIRMAMENT_MIRROR:-http://deb.debian.org/debian}
 
 log() { printf '[firmament] %s\n' "$*" >&2; }
@@ -89,6 +89,7 @@ require_host_tool() {
 
 # Makes sure the sysroot exists, creating it when missing (idempotent).
 ensure_sysroot() {
+    require_root
     require_host_tool bwrap bubblewrap
     sysroot_ready || "$FIRMAMENT_ROOT/tools/sysroot/create"
 }
