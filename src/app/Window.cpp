@@ -29,10 +29,13 @@ Window::Window(const std::wstring& title, int clientWidth, int clientHeight, boo
     if (visible) {
         ShowWindow(hwnd_, SW_SHOWDEFAULT);
         UpdateWindow(hwnd_);
+        RECT client{};
+        GetClientRect(hwnd_, &client);  // what the window manager granted
+        if (client.right > 0 && client.bottom > 0) {
+            width_ = client.right;
+            height_ = client.bottom;
+        }
     }
-    // The requested size is the client size, whatever the window manager decided.
-    width_ = clientWidth;
-    height_ = clientHeight;
 }
 
 Window::~Window() {

@@ -4,7 +4,9 @@
 
 namespace firmament {
 
-Texture2D createColorTexture(ID3D11Device* device, int width, int height, DXGI_FORMAT format, UINT bindFlags) {
+namespace {
+// One mip level, one slice, no multisampling: what every frame target is.
+Texture2D createTexture(ID3D11Device* device, int width, int height, DXGI_FORMAT format, UINT bindFlags, const char* what) {
     Texture2D t;
     t.width = width;
     t.height = height;
@@ -18,7 +20,13 @@ Texture2D createColorTexture(ID3D11Device* device, int width, int height, DXGI_F
     desc.SampleDesc.Count = 1;
     desc.Usage = D3D11_USAGE_DEFAULT;
     desc.BindFlags = bindFlags;
-    check(device->CreateTexture2D(&desc, nullptr, &t.texture), "CreateTexture2D (colour)");
+    check(device->CreateTexture2D(&desc, nullptr, &t.texture), what);
+    return t;
+}
+}  // namespace
+
+Texture2D createColorTexture(ID3D11Device* device, int width, int height, DXGI_FORMAT format, UINT bindFlags) {
+    Texture2D t = createTexture(device, width, height, format, bindFlags, "CreateTexture2D (colour)");
     if (bindFlags & D3D11_BIND_RENDER_TARGET)
         check(device->CreateRenderTargetView(t.texture.Get(), nullptr, &t.rtv), "CreateRenderTargetView");
     if (bindFlags & D3D11_BIND_SHADER_RESOURCE)
@@ -29,20 +37,8 @@ Texture2D createColorTexture(ID3D11Device* device, int width, int height, DXGI_F
 }
 
 Texture2D createDepthTexture(ID3D11Device* device, int width, int height) {
-    Texture2D t;
-    t.width = width;
-    t.height = height;
-    t.format = DXGI_FORMAT_R32_TYPELESS;
-    D3D11_TEXTURE2D_DESC desc{};
-    desc.Width = static_cast<UINT>(width);
-    desc.Height = static_cast<UINT>(height);
-    desc.MipLevels = 1;
-    desc.ArraySize = 1;
-    desc.Format = DXGI_FORMAT_R32_TYPELESS;
-    desc.SampleDesc.Count = 1;
-    desc.Usage = D3D11_USAGE_DEFAULT;
-    desc.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE;
-    check(device->CreateTexture2D(&desc, nullptr, &t.texture), "CreateTexture2D (depth)");
+    Texture2D t = createTexture(device, width, height, DXGI_FORMAT_R32_TYPELESS,
+                                D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE, "CreateTexture2D (depth)");
 
     D3D11_DEPTH_STENCIL_VIEW_DESC dsvDesc{};
     dsvDesc.Format = DXGI_FORMAT_D32_FLOAT;

@@ -1,5 +1,5 @@
-// firmament.exe --headless end to end: a few frames, a PNG that shows something (not a
-// uniform image), an EXR whose pixels and header describe the frame, GPU timings printed.
+// firmament.exe end to end, headless and in a window: a few frames, a PNG that shows
+// something (not a uniform image), an EXR whose pixels and header describe the frame.
 #include "core/ExrImage.h"
 #include "core/PngImage.h"
 #include "support/Process.h"
@@ -16,6 +16,21 @@ namespace {
 
 std::wstring firmamentExe() { return (executableFolder() / "firmament.exe").wstring(); }
 
+// Not uniform: at least 1% of the pixels differ from the most common colour (the
+// background); today that is the GUI overlay with the frame and pass times.
+void expectNotUniform(const Rgba8Image& image) {
+    std::map<std::uint32_t, size_t> histogram;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+        ++histogram[image.pixels[i] | image.pixels[i + 1] << 8 | image.pixels[i + 2] << 16];
+        ASSERT_EQ(image.pixels[i + 3], 255);
+    }
+    size_t mostCommon = 0;
+    for (const auto& [colour, count] : histogram) mostCommon = std::max(mostCommon, count);
+    const size_t pixels = image.pixels.size() / 4;
+    EXPECT_GE(histogram.size(), 3u);
+    EXPECT_GT(pixels - mostCommon, pixels / 100) << "the captured frame is (nearly) uniform";
+}
+
 TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-headless-test";
     std::filesystem::remove_all(folder);
@@ -30,18 +45,7 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const Rgba8Image image = readPng(png);
     ASSERT_EQ(image.width, 320);
     ASSERT_EQ(image.height, 200);
-    // Not uniform: at least 1% of the pixels differ from the most common colour (the
-    // background), here the GUI overlay with the frame and pass times.
-    std::map<std::uint32_t, size_t> histogram;
-    for (size_t i = 0; i < image.pixels.size(); i += 4) {
-        ++histogram[image.pixels[i] | image.pixels[i + 1] << 8 | image.pixels[i + 2] << 16];
-        ASSERT_EQ(image.pixels[i + 3], 255);
-    }
-    size_t mostCommon = 0;
-    for (const auto& [colour, count] : histogram) mostCommon = std::max(mostCommon, count);
-    const size_t pixels = image.pixels.size() / 4;
-    EXPECT_GE(histogram.size(), 3u);
-    EXPECT_GT(pixels - mostCommon, pixels / 100) << "the captured frame is (nearly) uniform";
+    expectNotUniform(image);
 
     const ExrFile file = readExr(exr);
     ASSERT_EQ(file.image.width, 320);
@@ -68,6 +72,22 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     // The projection matches the frame's aspect ratio: m[1][1] / m[0][0] = width / height.
     const glm::mat4 projection = std::get<glm::mat4>(a.at("firmament.projection"));
     EXPECT_NEAR(projection[1][1] / projection[0][0], 320.0f / 200.0f, 1e-4f);
+    std::filesystem::remove_all(folder);
+}
+
+// A visible window: the flip-model swap chain, presentation without VSync, and the capture
+// read from the back buffer before it is presented.
+TEST(WindowedRun, PresentsThroughTheSwapChainAndCaptures) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-windowed-test";
+    std::filesystem::remove_all(folder);
+    const ProcessResult run = runProcess(firmamentExe(), {L"--frames", L"5", L"--resolution", L"300x180", L"--vsync", L"off",
+                                                          L"--capture", (folder / "window.png").wstring()});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("GPU time per pass over 5 frames"), std::string::npos) << run.output;
+    const Rgba8Image image = readPng(folder / "window.png");
+    EXPECT_GT(image.width, 0);
+    EXPECT_GT(image.height, 0);
+    expectNotUniform(image);
     std::filesystem::remove_all(folder);
 }
 
