@@ -22,11 +22,11 @@ step() {
     log "$what: done in $((SECONDS - start)) s"
 }
 
-# The sysroot's key: a hash of the package list and the script that makes it. A change of
-# either gives a new sysroot (the old one is removed once the new one is complete).
+# The sysroot's key: a hash of the package list, whose first line also carries a format
+# number that is raised when tools/sysroot/create changes what it puts into the sysroot.
+# A new key gives a new sysroot (the old one is removed once the new one is complete).
 sysroot_key() {
-    cat "$FIRMAMENT_ROOT/tools/sysroot/packages.txt" "$FIRMAMENT_ROOT/tools/sysroot/create" |
-        sha256sum | cut -c1-12
+    sha256sum <"$FIRMAMENT_ROOT/tools/sysroot/packages.txt" | cut -c1-12
 }
 
 # The third-party prefix's key: a change of the script that cross-builds it, or of the
