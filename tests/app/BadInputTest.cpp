@@ -10,8 +10,6 @@
 namespace firmament::test {
 namespace {
 
-std::wstring firmamentExe() { return (executableFolder() / "firmament.exe").wstring(); }
-
 void expectFailure(const std::vector<std::wstring>& arguments, unsigned long exitCode, const std::string& message) {
     const ProcessResult run = runProcess(firmamentExe(), arguments);
     EXPECT_EQ(run.exitCode, exitCode) << run.output;

@@ -14,8 +14,6 @@
 namespace firmament::test {
 namespace {
 
-std::wstring firmamentExe() { return (executableFolder() / "firmament.exe").wstring(); }
-
 // Not uniform: at least 1% of the pixels differ from the most common colour (the
 // background); today that is the GUI overlay with the frame and pass times.
 void expectNotUniform(const Rgba8Image& image) {

@@ -3,6 +3,7 @@
 // the test shaders and of the program's shaders.
 #include "gpu/Device.h"
 #include "gpu/PrecompiledShaders.h"
+#include "gpu/Readback.h"
 #include "gpu/ShaderLibrary.h"
 #include "support/TestPaths.h"
 
@@ -39,6 +40,24 @@ protected:
         ComPtr<ID3D11Buffer> buffer;
         EXPECT_HRESULT_SUCCEEDED(device()->CreateBuffer(&desc, &data, &buffer));
         return buffer;
+    }
+
+    // Runs one compute shader over `input` (t0) into a fresh output buffer of `outputCount`
+    // elements (u0, filled with `fill` first) with `groups` thread groups; returns the output.
+    template <typename In, typename Out>
+    std::vector<Out> runCompute(const ShaderKey& key, const std::vector<In>& input, size_t outputCount, Out fill,
+                                UINT groups) {
+        auto inputBuffer = structuredBuffer(input, false);
+        auto outputBuffer = structuredBuffer(std::vector<Out>(outputCount, fill), true);
+        ComPtr<ID3D11ShaderResourceView> srv;
+        ComPtr<ID3D11UnorderedAccessView> uav;
+        EXPECT_HRESULT_SUCCEEDED(device()->CreateShaderResourceView(inputBuffer.Get(), nullptr, &srv));
+        EXPECT_HRESULT_SUCCEEDED(device()->CreateUnorderedAccessView(outputBuffer.Get(), nullptr, &uav));
+        context()->CSSetShader(testShaderLibrary->computeShader(key), nullptr, 0);
+        context()->CSSetShaderResources(0, 1, srv.GetAddressOf());
+        context()->CSSetUnorderedAccessViews(0, 1, uav.GetAddressOf(), nullptr);
+        context()->Dispatch(groups, 1, 1);
+        return asVector<Out>(readBuffer(device(), context(), outputBuffer.Get()));
     }
 
     template <typename T>

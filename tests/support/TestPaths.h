@@ -15,5 +15,6 @@ inline std::filesystem::path executableFolder() {
 
 inline std::filesystem::path productShaders() { return executableFolder() / "shaders"; }
 inline std::filesystem::path testShaders() { return executableFolder() / "test-shaders"; }
+inline std::wstring firmamentExe() { return (executableFolder() / "firmament.exe").wstring(); }
 
 }  // namespace firmament::test
