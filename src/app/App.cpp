@@ -4,19 +4,22 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "core/Log.h"
+#include "core/SettingsJson.h"
+#include "gpu/PrecompiledShaders.h"
+#include "gpu/SourceShaderCompilers.h"
 #include "FirmamentVersion.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <sstream>
 
 namespace firmament {
 
 namespace {
 
-// Until the sky and the terrain draw, the HDR frame holds this clear value (linear radiance).
+// Until the sky and the terrain draw, the HDR frame holds this clear value (linear radiance)
+// wherever the orientation grid is off.
 constexpr float kBackground[4] = {0.02f, 0.025f, 0.035f, 1.0f};
+constexpr double kSourcePollSeconds = 0.25;  // shader files are checked four times a second
 
 std::filesystem::path executableFolder() {
     wchar_t path[MAX_PATH];
@@ -47,20 +50,48 @@ DeviceOptions deviceOptions(const Options& options) {
     return d;
 }
 
+std::optional<int> digitKey(WPARAM key) {
+    if (key >= '1' && key <= '9') return static_cast<int>(key - '0');
+    if (key >= VK_NUMPAD1 && key <= VK_NUMPAD9) return static_cast<int>(key - VK_NUMPAD0);
+    return std::nullopt;
+}
+
 }  // namespace
 
-App::App(const Options& options)
+App::App(const Options& options, const State& state)
     : options_(checkedOptions(options)),
+      state_(state),
       shaderSource_(openShaderFolder(options_)),
       window_(std::make_unique<Window>(L"Firmament " + std::wstring(kFirmamentVersion, kFirmamentVersion + std::strlen(kFirmamentVersion)),
                                        options_.width, options_.height, !options_.headless,
-                                       Window::Callbacks{&Overlay::handleMessage, [this](WPARAM key) { onKey(key); }})),
+                                       Window::Callbacks{&Overlay::handleMessage, [this](WPARAM key) { onKey(key); },
+                                                         [this](UINT m, WPARAM w, LPARAM l) { onInput(m, w, l); }})),
       device_(deviceOptions(options_)),
       shaders_(device_.device(), std::move(shaderSource_)),
       profiler_(device_.device(), device_.context()),
-      displayEncode_(device_.device()),
-      directionToSun_(directionFromElevationAzimuth(0.5235988f, 0.0f)) {
+      frameConstantBuffer_(device_.device()),
+      orientationGrid_(device_.device()),
+      displayEncode_(device_.device()) {
     log::info("device: " + device_.describe());
+
+    // Hot reload compiles from the HLSL folder the build used, unless told otherwise.
+    const auto& precompiled = static_cast<const PrecompiledShaders&>(shaders_.compiler());
+    const auto sourceRoot = options_.shaderSource ? options_.shaderSource : precompiled.sourceRoot();
+    const auto choice = parseSourceCompilerChoice(options_.shaderCompiler).value_or(SourceCompilerChoice::Auto);
+    std::error_code ec;
+    if (choice == SourceCompilerChoice::None) {
+        log::info("shader hot reload: off (--shader-compiler none)");
+    } else if (!sourceRoot || !std::filesystem::is_directory(*sourceRoot, ec)) {
+        if (options_.shaderSource) throw Error("--shader-source: '" + options_.shaderSource->string() + "' is not a folder");
+        log::warning("shader hot reload: off (the HLSL folder " + (sourceRoot ? sourceRoot->string() : std::string("?")) +
+                     " is not there; pass --shader-source)");
+    } else if (auto compiler = makeSourceCompiler(choice, *sourceRoot)) {
+        log::info("shader hot reload: " + compiler->name() + " from " + sourceRoot->string());
+        shaders_.enableHotReload(std::move(compiler), *sourceRoot);
+    } else {
+        log::warning("shader hot reload: off (no shader compiler found: d3dcompiler_47.dll or fxc.exe)");
+    }
+
     if (!options_.headless)
         swapChain_ = std::make_unique<SwapChain>(device_, window_->handle(), options_.width, options_.height);
     overlay_ = std::make_unique<Overlay>(window_->handle(), device_.device(), device_.context());
@@ -87,10 +118,78 @@ ID3D11Texture2D* App::outputTexture() const {
     return swapChain_ ? swapChain_->backBuffer() : offscreenOutput_.texture.Get();
 }
 
+void App::setNotice(std::string text, bool isError) {
+    notice_ = std::move(text);
+    noticeIsError_ = isError;
+}
+
+void App::onInput(UINT message, WPARAM wParam, LPARAM lParam) {
+    keyboardMouse_.onMessage(message, wParam, lParam, overlay_ && overlay_->wantsMouse(), overlay_ && overlay_->wantsKeyboard());
+}
+
 void App::onKey(WPARAM key) {
     if (overlay_ && overlay_->wantsKeyboard()) return;
-    if (key == VK_F1 && overlay_) overlay_->toggleHelp();
-    if (key == VK_ESCAPE) window_->close();
+    const bool control = GetKeyState(VK_CONTROL) < 0;
+    if (const auto slot = digitKey(key)) {
+        if (control) {
+            state_.storeBookmark(*slot);
+            setNotice("bookmark " + std::to_string(*slot) + " stored", false);
+        } else if (state_.recallBookmark(*slot)) {
+            setNotice("bookmark " + std::to_string(*slot) + " recalled", false);
+        } else {
+            setNotice("bookmark " + std::to_string(*slot) + " is empty (Ctrl+" + std::to_string(*slot) + " stores one)", true);
+        }
+        return;
+    }
+    switch (key) {
+        case VK_F1: state_.ui.help = !state_.ui.help; break;
+        case VK_F5: saveState(); break;
+        case VK_F8: reloadShaders(); break;
+        case VK_F9: loadState(); break;
+        case VK_ESCAPE: window_->close(); break;
+        default: break;
+    }
+}
+
+void App::reloadShaders() {
+    if (!shaders_.hotReloadEnabled()) {
+        setNotice("shader hot reload is off (see the log)", true);
+        return;
+    }
+    const ReloadResult result = shaders_.reloadAll();
+    if (result.failedTechniques.empty())
+        setNotice("reloaded " + std::to_string(result.shadersCompiled) + " shaders in " + std::to_string(static_cast<int>(result.milliseconds)) + " ms", false);
+    else
+        setNotice("shader reload failed for " + std::to_string(result.failedTechniques.size()) + " technique(s): see the error window", true);
+}
+
+void App::saveState() {
+    try {
+        saveStateFile(state_, options_.stateFile);
+        setNotice("state saved to " + options_.stateFile.string(), false);
+        log::info("state saved to " + options_.stateFile.string());
+    } catch (const Error& e) {
+        setNotice(e.what(), true);
+        log::error(e.what());
+    }
+}
+
+void App::loadState() {
+    try {
+        loadStateFile(state_, options_.stateFile);
+        setNotice("state loaded from " + options_.stateFile.string(), false);
+        log::info("state loaded from " + options_.stateFile.string());
+    } catch (const Error& e) {
+        setNotice(e.what(), true);  // the state is unchanged
+        log::error(e.what());
+    }
+}
+
+void App::handleRequests(const GuiRequests& requests) {
+    if (requests.toggleFullScreen && swapChain_) window_->toggleFullScreen();
+    if (requests.reloadShaders) reloadShaders();
+    if (requests.saveState) saveState();
+    if (requests.loadState) loadState();
 }
 
 int App::run() {
@@ -107,63 +206,95 @@ int App::run() {
             createFrameTargets(swapChain_->width(), swapChain_->height());
         }
         timer_.tick();
-        renderFrame();
+        update();
         const bool last = frames != 0 && frame + 1 == frames;
-        if (last && options_.capture) captureFrame();
-        if (swapChain_) swapChain_->present(options_.vsync);
+        const bool capture = last && options_.capture;
+        renderFrame(!capture || options_.captureUi);
+        if (capture) captureFrame();
+        if (swapChain_) swapChain_->present(state_.display.vsync);
     }
     if (options_.capture && frames == 0) {  // a windowed run closed by the person: capture the last frame
-        renderFrame();
+        renderFrame(options_.captureUi);
         captureFrame();
     }
     printTimings();
     return 0;
 }
 
-void App::renderFrame() {
+void App::update() {
+    const double now = timer_.totalSeconds();
+    const float dt = static_cast<float>(timer_.deltaSeconds());
+    frameTimes_.add(dt * 1000.0f);
+    if (state_.shaders.autoReload && shaders_.hotReloadEnabled() && now - lastSourcePoll_ >= kSourcePollSeconds) {
+        lastSourcePoll_ = now;
+        const ReloadResult result = shaders_.reloadChanged();
+        if (result.attempted())
+            setNotice(result.failedTechniques.empty() ? "shaders reloaded after a file change" : "shader reload failed: see the error window",
+                      !result.failedTechniques.empty());
+    }
+    FlightInput input = keyboardMouse_.takeFrameInput(state_.flight);
+    input += hidDevices_.poll(now, state_.devices);
+    input += xinputPads_.poll(now, state_.devices);
+    fly(state_.camera, state_.sun, state_.flight, input, dt);
+}
+
+gpu::FrameConstants App::frameConstants() const {
+    const glm::mat4 viewProjection = state_.camera.projection(static_cast<float>(width_) / static_cast<float>(height_)) * state_.camera.view();
+    gpu::FrameConstants c{};
+    c.viewProjection = viewProjection;
+    c.inverseViewProjection = glm::inverse(viewProjection);
+    c.cameraPosition = glm::vec4(state_.camera.position, state_.camera.position.y);
+    c.directionToSun = glm::vec4(state_.sun.direction(), 0.0f);
+    c.screen = glm::vec4(static_cast<float>(width_), static_cast<float>(height_), 1.0f / static_cast<float>(width_),
+                         1.0f / static_cast<float>(height_));
+    c.time = glm::vec4(static_cast<float>(timer_.totalSeconds()), 0.0f, 0.0f, 0.0f);
+    return c;
+}
+
+void App::renderFrame(bool drawGui) {
     ID3D11DeviceContext* context = device_.context();
     profiler_.beginFrame();
+    frameConstantBuffer_.update(context, frameConstants());
     {
         auto pass = profiler_.scope("Clear frame targets");
         context->ClearRenderTargetView(hdrFrame_.rtv.Get(), kBackground);
         context->ClearDepthStencilView(depth_.dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
     }
+    if (state_.scene.orientationGrid) {
+        auto pass = profiler_.scope("Orientation grid");
+        orientationGrid_.render(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), width_, height_);
+    }
     {
         auto pass = profiler_.scope("Display encode");
-        displayEncode_.render(context, shaders_, hdrFrame_.srv.Get(), outputTarget(), width_, height_);
+        displayEncode_.render(context, shaders_, state_.toneMapping, hdrFrame_.srv.Get(), outputTarget(), width_, height_);
     }
-    FrameStats stats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), width_, height_, device_.adapterName()};
-    overlay_->build(stats, profiler_.timings());
-    {
+    std::vector<std::string> devices = hidDevices_.connectedNames();
+    for (int i = 0; i < xinputPads_.connectedCount(); ++i) devices.push_back("Xbox pad (XInput)");
+    GuiModel model{state_,
+                   FrameStats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), width_, height_, device_.adapterName()},
+                   profiler_.timings(),
+                   frameTimes_,
+                   shaders_.errors(),
+                   shaders_.sourceCompiler() ? shaders_.sourceCompiler()->name() : std::string(),
+                   std::move(devices),
+                   notice_,
+                   noticeIsError_};
+    handleRequests(overlay_->build(model));
+    if (drawGui) {
         auto pass = profiler_.scope("GUI");
         overlay_->render(context, outputTarget());
     }
     profiler_.endFrame();
 }
 
-std::string App::settingsText() const {
-    std::ostringstream s;
-    s << "device.driver = " << (options_.adapter ? "adapter" : options_.driver == DriverType::Warp ? "warp" : "hardware") << "\n";
-    if (options_.adapter) s << "device.adapter = " << *options_.adapter << "\n";
-    s << "display.resolution = " << width_ << "x" << height_ << "\n";
-    s << "display.vsync = " << (options_.vsync ? "on" : "off") << "\n";
-    s << "display.headless = " << (options_.headless ? "on" : "off") << "\n";
-    s << "camera.position = " << camera_.position.x << " " << camera_.position.y << " " << camera_.position.z << "\n";
-    s << "camera.yaw = " << camera_.yawRadians << "\n";
-    s << "camera.pitch = " << camera_.pitchRadians << "\n";
-    s << "camera.verticalFov = " << camera_.verticalFovRadians << "\n";
-    s << "sun.direction = " << directionToSun_.x << " " << directionToSun_.y << " " << directionToSun_.z << "\n";
-    return s.str();
-}
-
 void App::captureFrame() {
     ID3D11Device* device = device_.device();
     ID3D11DeviceContext* context = device_.context();
     CaptureDescription d;
-    d.view = camera_.view();
-    d.projection = camera_.projection(static_cast<float>(width_) / static_cast<float>(height_));
-    d.directionToSun = directionToSun_;
-    d.settings = settingsText();
+    d.view = state_.camera.view();
+    d.projection = state_.camera.projection(static_cast<float>(width_) / static_cast<float>(height_));
+    d.directionToSun = state_.sun.direction();
+    d.settings = stateToJson(state_).dump(2);
     d.adapter = device_.describe();
     d.frame = static_cast<int>(timer_.frameCount());
     writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),

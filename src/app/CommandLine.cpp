@@ -128,6 +128,36 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
                 return result;
             }
             o.capture = path;
+        } else if (flag == "--capture-ui") {
+            if (!noValue()) return result;
+            o.captureUi = true;
+        } else if (flag == "--shader-compiler") {
+            const auto v = value();
+            if (!v) return result;
+            if (*v != "auto" && *v != "d3dcompile" && *v != "vkd3d" && *v != "fxc" && *v != "none") {
+                result.error = "--shader-compiler: '" + *v + "' is not one of auto, d3dcompile, vkd3d, fxc, none";
+                return result;
+            }
+            o.shaderCompiler = *v;
+        } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file") {
+            const auto v = value();
+            if (!v) return result;
+            if (v->empty()) {
+                result.error = flag + ": the path is empty";
+                return result;
+            }
+            if (flag == "--shader-source") o.shaderSource = std::filesystem::path(*v);
+            else if (flag == "--settings") o.settingsFile = std::filesystem::path(*v);
+            else o.stateFile = std::filesystem::path(*v);
+        } else if (flag == "--set") {
+            const auto v = value();
+            if (!v) return result;
+            const auto eq = v->find('='), dot = v->find('.');
+            if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || eq == dot + 1) {
+                result.error = "--set: '" + *v + "' is not section.key=value (for example camera.fieldOfView=60)";
+                return result;
+            }
+            o.assignments.push_back(*v);
         } else if (flag == "--shader-dir") {
             const auto v = value();
             if (!v) return result;
@@ -172,10 +202,22 @@ Running
   --vsync on|off         wait for vertical blank when presenting (default on)
   --capture PATH         after the last frame write PATH.png (display) and
                          PATH.exr (HDR, half float, with the settings in its header)
+  --capture-ui           include the GUI in the capture (left out by default)
+Settings
+  --settings FILE        load settings, camera and sun from a JSON state file
+  --set SECTION.KEY=VAL  change one setting (repeatable, after --settings);
+                         for example --set camera.fieldOfView=60
+  --state-file FILE      where F5 saves and F9 loads the state
+                         (default firmament-state.json in the working folder)
+Shaders
   --shader-dir DIR       compiled shaders (default: 'shaders' beside the program)
+  --shader-source DIR    HLSL folder that F8 and file changes reload from
+                         (default: the folder the build compiled)
+  --shader-compiler NAME hot-reload compiler: auto, d3dcompile, vkd3d, fxc, none
+                         (auto: vkd3d-compiler under Wine, else D3DCompile)
   --version              print the version
   --help                 print this text
-Exit codes: 0 success, 1 runtime error, 2 bad command line.
+Exit codes: 0 success, 1 runtime error, 2 bad command line or settings.
 )";
 }
 

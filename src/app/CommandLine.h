@@ -17,9 +17,15 @@ struct Options {
     std::optional<int> frames;     // stop after this many frames (headless default: 30)
     int width = 1280;
     int height = 720;
-    bool vsync = true;
+    std::optional<bool> vsync;     // overrides display.vsync
     std::optional<std::filesystem::path> capture;  // PNG path; the EXR goes beside it
+    bool captureUi = false;        // the GUI is left out of captures unless asked for
     std::optional<std::filesystem::path> shaderDir;
+    std::optional<std::filesystem::path> shaderSource;  // HLSL folder for hot reload
+    std::string shaderCompiler = "auto";                // auto|d3dcompile|vkd3d|fxc|none
+    std::optional<std::filesystem::path> settingsFile;  // loaded at start
+    std::vector<std::string> assignments;               // --set section.key=value, in order
+    std::filesystem::path stateFile = "firmament-state.json";  // F5 saves it, F9 loads it
     bool help = false;
     bool version = false;
 

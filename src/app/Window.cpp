@@ -89,7 +89,18 @@ LRESULT CALLBACK Window::windowProc(HWND hwnd, UINT message, WPARAM wParam, LPAR
 }
 
 LRESULT Window::handleMessage(UINT message, WPARAM wParam, LPARAM lParam) {
+    const bool inputMessage = (message >= WM_KEYFIRST && message <= WM_KEYLAST) ||
+                              (message >= WM_MOUSEFIRST && message <= WM_MOUSELAST) || message == WM_KILLFOCUS;
+    if (inputMessage && callbacks_.input) callbacks_.input(message, wParam, lParam);
     switch (message) {
+        case WM_LBUTTONDOWN:
+        case WM_RBUTTONDOWN:
+            SetCapture(hwnd_);  // a drag keeps turning when the pointer leaves the window
+            return 0;
+        case WM_LBUTTONUP:
+        case WM_RBUTTONUP:
+            if (!(wParam & (MK_LBUTTON | MK_RBUTTON))) ReleaseCapture();
+            return 0;
         case WM_SIZE:
             minimized_ = wParam == SIZE_MINIMIZED;
             if (!minimized_) {

@@ -14,7 +14,9 @@ public:
     struct Callbacks {
         // Messages go here first; returning true means handled (the GUI took them).
         std::function<bool(HWND, UINT, WPARAM, LPARAM)> preview;
-        std::function<void(WPARAM virtualKey)> keyDown;  // keys the GUI did not take
+        std::function<void(WPARAM virtualKey)> keyDown;  // key presses (not auto-repeats)
+        // Keyboard, mouse and focus messages, for the fly camera's input state.
+        std::function<void(UINT, WPARAM, LPARAM)> input;
     };
 
     Window(const std::wstring& title, int clientWidth, int clientHeight, bool visible, Callbacks callbacks);

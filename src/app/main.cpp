@@ -1,7 +1,8 @@
 // firmament.exe: parses the command line, runs the App, and turns every error into one
-// message and a non-zero exit code (1 runtime error, 2 bad command line).
+// message and a non-zero exit code (1 runtime error, 2 bad command line or settings).
 #include "app/App.h"
 #include "app/CommandLine.h"
+#include "app/State.h"
 #include "core/Error.h"
 #include "core/Log.h"
 #include "FirmamentVersion.h"
@@ -42,8 +43,17 @@ int main() {
         std::printf("firmament %s\n", kFirmamentVersion);
         return 0;
     }
+    State state;
     try {
-        App app(parsed.options);
+        if (parsed.options.settingsFile) loadStateFile(state, *parsed.options.settingsFile);
+        if (parsed.options.vsync) state.display.vsync = *parsed.options.vsync;
+        applyAssignments(state, parsed.options.assignments);
+    } catch (const Error& e) {  // bad settings are bad input, like a bad command line
+        log::error(e.what());
+        return 2;
+    }
+    try {
+        App app(parsed.options, state);
         return app.run();
     } catch (const Error& e) {
         log::error(e.what());

@@ -2,14 +2,19 @@
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <cmath>
 
 namespace firmament {
 
 glm::vec3 Camera::forward() const {
-    return {std::cos(pitchRadians) * std::sin(yawRadians), std::sin(pitchRadians),
-            std::cos(pitchRadians) * std::cos(yawRadians)};
+    return directionFromElevationAzimuth(glm::radians(pitchDegrees), glm::radians(yawDegrees));
+}
+
+glm::vec3 Camera::right() const {
+    const float yaw = glm::radians(yawDegrees);
+    return {std::cos(yaw), 0.0f, -std::sin(yaw)};
 }
 
 glm::mat4 Camera::view() const {
@@ -17,7 +22,23 @@ glm::mat4 Camera::view() const {
 }
 
 glm::mat4 Camera::projection(float aspectRatio) const {
-    return glm::perspectiveLH_ZO(verticalFovRadians, aspectRatio, nearPlane, farPlane);
+    return glm::perspectiveLH_ZO(glm::radians(verticalFovDegrees), aspectRatio, nearPlane, farPlane);
+}
+
+void Camera::visit(SettingsVisitor& v) {
+    v.field("position", position, "Position (m)");
+    v.field("yaw", yawDegrees, {-180.0f, 180.0f}, "Yaw (degrees)");
+    v.field("pitch", pitchDegrees, {-kMaxPitchDegrees, kMaxPitchDegrees}, "Pitch (degrees)");
+    v.field("fieldOfView", verticalFovDegrees, {10.0f, 120.0f}, "Vertical field of view (degrees)");
+}
+
+glm::vec3 Sun::direction() const {
+    return directionFromElevationAzimuth(glm::radians(elevationDegrees), glm::radians(azimuthDegrees));
+}
+
+void Sun::visit(SettingsVisitor& v) {
+    v.field("elevation", elevationDegrees, {-90.0f, 90.0f}, "Sun elevation (degrees)");
+    v.field("azimuth", azimuthDegrees, {-180.0f, 180.0f}, "Sun azimuth (degrees)");
 }
 
 glm::vec3 directionFromElevationAzimuth(float elevation, float azimuth) {

@@ -1,25 +1,41 @@
 #pragma once
 // A perspective camera in Direct3D's conventions: left-handed, y up, x right, z forward,
 // clip-space depth from 0 (near) to 1 (far). Orientation is yaw about +y then pitch.
+// Angles are in degrees, as a person reads and types them in settings files.
+#include "core/Settings.h"
+
 #include <glm/glm.hpp>
 
 namespace firmament {
 
 struct Camera {
-    glm::vec3 position{0.0f, 100.0f, 0.0f};  // metres above the ground plane
-    float yawRadians = 0.0f;                  // 0 looks along +z
-    float pitchRadians = 0.0f;                // positive looks up
-    float verticalFovRadians = 0.7853982f;    // 45 degrees, as document 000's sample
+    glm::vec3 position{0.0f, 8000.0f, 0.0f};  // metres; y is the altitude above the ground plane
+    float yawDegrees = 0.0f;                  // 0 looks along +z, 90 along +x
+    float pitchDegrees = 0.0f;                // positive looks up
+    float verticalFovDegrees = 45.0f;         // as document 000's sample
     float nearPlane = 1.0f;                   // metres
     float farPlane = 1.0e6f;                  // metres
 
+    static constexpr float kMaxPitchDegrees = 89.0f;  // keeps lookAt's up vector valid
+
     glm::vec3 forward() const;
+    glm::vec3 right() const;  // horizontal, to the right of forward
     glm::mat4 view() const;
     glm::mat4 projection(float aspectRatio) const;
+
+    void visit(SettingsVisitor& v);  // section "camera"
 };
 
-// The direction towards the sun from elevation above the horizon and azimuth from +z
-// towards +x, both in radians.
-glm::vec3 directionFromElevationAzimuth(float elevation, float azimuth);
+// The direction towards the sun, from its elevation above the horizon and its azimuth
+// from +z towards +x.
+struct Sun {
+    float elevationDegrees = 30.0f;
+    float azimuthDegrees = 0.0f;
+
+    glm::vec3 direction() const;
+    void visit(SettingsVisitor& v);  // section "sun"
+};
+
+glm::vec3 directionFromElevationAzimuth(float elevationRadians, float azimuthRadians);
 
 }  // namespace firmament

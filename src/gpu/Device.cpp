@@ -7,14 +7,6 @@
 
 namespace firmament {
 
-std::string narrow(const wchar_t* text) {
-    const int size = WideCharToMultiByte(CP_UTF8, 0, text, -1, nullptr, 0, nullptr, nullptr);
-    if (size <= 1) return {};
-    std::string out(static_cast<size_t>(size - 1), '\0');
-    WideCharToMultiByte(CP_UTF8, 0, text, -1, out.data(), size, nullptr, nullptr);
-    return out;
-}
-
 std::string featureLevelName(D3D_FEATURE_LEVEL level) {
     switch (level) {
         case D3D_FEATURE_LEVEL_11_0: return "11_0";

@@ -1,5 +1,6 @@
 #pragma once
 // The Direct3D 11 device and its immediate context, created as DeviceOptions asks.
+#include "core/Text.h"
 #include "gpu/DeviceOptions.h"
 
 #include <d3d11_1.h>
@@ -35,6 +36,5 @@ private:
 };
 
 std::string featureLevelName(D3D_FEATURE_LEVEL level);
-std::string narrow(const wchar_t* text);  // UTF-16 to UTF-8
 
 }  // namespace firmament

@@ -19,6 +19,10 @@ PrecompiledShaders::PrecompiledShaders(std::filesystem::path folder) : folder_(s
         if (!line.empty() && line.back() == '\r') line.pop_back();
         const auto tab = line.find('\t');
         if (tab == std::string::npos) continue;
+        if (line.compare(0, tab, "#source") == 0) {
+            sourceRoot_ = std::filesystem::path(line.substr(tab + 1));
+            continue;
+        }
         files_[line.substr(0, tab)] = line.substr(tab + 1);
     }
 }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 
 namespace firmament {
 
@@ -17,10 +18,13 @@ public:
 
     const std::filesystem::path& folder() const { return folder_; }
     size_t size() const { return files_.size(); }
+    // The HLSL folder these were compiled from (the manifest's "#source" line), for hot reload.
+    const std::optional<std::filesystem::path>& sourceRoot() const { return sourceRoot_; }
 
 private:
     std::filesystem::path folder_;
-    std::map<std::string, std::string> files_;  // key id -> .cso file name
+    std::map<std::string, std::string> files_;
+    std::optional<std::filesystem::path> sourceRoot_;  // key id -> .cso file name
 };
 
 }  // namespace firmament

@@ -1,7 +1,10 @@
 #pragma once
-// Writes the HDR frame to the 8-bit output target, clamped and sRGB encoded
-// (shaders/postfx/display_encode.hlsl). Tone mapping will take its place in the frame.
+// Writes the HDR frame to the 8-bit output target, scaled by the exposure, clamped and sRGB
+// encoded (shaders/postfx/display_encode.hlsl). Tone mapping will take its place in the frame.
+#include "gpu/ConstantBuffer.h"
 #include "gpu/ShaderLibrary.h"
+#include "gpu/SharedStructures.h"
+#include "postfx/ToneMappingSettings.h"
 
 #include <d3d11.h>
 
@@ -11,12 +14,13 @@ class DisplayEncodePass {
 public:
     explicit DisplayEncodePass(ID3D11Device* device);
 
-    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11ShaderResourceView* hdrFrame,
-                ID3D11RenderTargetView* output, int width, int height);
+    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ToneMappingSettings& settings,
+                ID3D11ShaderResourceView* hdrFrame, ID3D11RenderTargetView* output, int width, int height);
 
 private:
     ComPtr<ID3D11RasterizerState> rasterizer_;
     ComPtr<ID3D11DepthStencilState> noDepth_;
+    ConstantBuffer<gpu::DisplayEncodeConstants> constants_;
 };
 
 }  // namespace firmament

@@ -49,6 +49,30 @@ TEST(BadInput, ShaderFolderWithoutManifest) {
     std::filesystem::remove_all(folder);
 }
 
+TEST(BadInput, SettingsOnTheCommandLineNameTheKey) {
+    expectFailure({L"--headless", L"--set", L"camera.fieldOfVeiw=60"}, 2, "--set camera.fieldOfVeiw=60: unknown key 'camera.fieldOfVeiw'");
+    expectFailure({L"--headless", L"--set", L"camera.fieldOfView=wide"}, 2, "camera.fieldOfView: expected a number, got 'wide'");
+    expectFailure({L"--headless", L"--set", L"camera.fieldOfView=500"}, 2, "camera.fieldOfView: 500 is outside 10 to 120");
+    expectFailure({L"--headless", L"--set", L"fieldOfView"}, 2, "is not section.key=value");
+}
+
+TEST(BadInput, SettingsFilesNameTheKey) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-bad-settings";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "type.json") << R"({"sun": {"elevation": "high"}})";
+    expectFailure({L"--headless", L"--settings", (folder / "type.json").wstring()}, 2, "sun.elevation: expected a number, got \"high\"");
+    std::ofstream(folder / "syntax.json") << R"({"sun": {"elevation": 10)";
+    expectFailure({L"--headless", L"--settings", (folder / "syntax.json").wstring()}, 2, "syntax.json: not valid JSON");
+    expectFailure({L"--headless", L"--settings", (folder / "absent.json").wstring()}, 2, "absent.json");
+    std::filesystem::remove_all(folder);
+}
+
+TEST(BadInput, ShaderCompilerAndSourceFolder) {
+    expectFailure({L"--headless", L"--shader-compiler", L"cl"}, 2, "--shader-compiler: 'cl' is not one of");
+    expectFailure({L"--headless", L"--frames", L"1", L"--shader-source", L"no-such-hlsl"}, 1,
+                  "--shader-source: 'no-such-hlsl' is not a folder");
+}
+
 TEST(GoodInput, HelpAndVersionExitWithZero) {
     const ProcessResult help = runProcess(firmamentExe(), {L"--help"});
     EXPECT_EQ(help.exitCode, 0u);

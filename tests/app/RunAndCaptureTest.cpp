@@ -8,14 +8,18 @@
 #include <Imath/half.h>
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <cmath>
+#include <cwchar>
+#include <fstream>
 #include <map>
 
 namespace firmament::test {
 namespace {
 
-// Not uniform: at least 1% of the pixels differ from the most common colour (the
-// background); today that is the GUI overlay with the frame and pass times.
+// Not uniform: at least 1% of the pixels differ from the most common colour.
 void expectNotUniform(const Rgba8Image& image) {
     std::map<std::uint32_t, size_t> histogram;
     for (size_t i = 0; i < image.pixels.size(); i += 4) {
@@ -29,13 +33,22 @@ void expectNotUniform(const Rgba8Image& image) {
     EXPECT_GT(pixels - mostCommon, pixels / 100) << "the captured frame is (nearly) uniform";
 }
 
+Imath::half halfAt(const ExrFile& file, int x, int y, int channel) {
+    Imath::half h;
+    h.setBits(file.image.halfBits[(static_cast<size_t>(y) * file.image.width + x) * 4 + channel]);
+    return h;
+}
+
+// With the orientation grid off nothing draws yet: the HDR frame holds the background
+// radiance everywhere, and the PNG, without the GUI (left out by default), is uniform.
 TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-headless-test";
     std::filesystem::remove_all(folder);
     const auto png = folder / "frame.png", exr = folder / "frame.exr";
 
     const ProcessResult run =
-        runProcess(firmamentExe(), {L"--headless", L"--frames", L"4", L"--resolution", L"320x200", L"--capture", png.wstring()});
+        runProcess(firmamentExe(), {L"--headless", L"--frames", L"4", L"--resolution", L"320x200", L"--capture", png.wstring(),
+                                    L"--set", L"scene.orientationGrid=off", L"--set", L"camera.fieldOfView=60"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("GPU time per pass over 4 frames at 320x200"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("Display encode"), std::string::npos) << run.output;
@@ -43,19 +56,16 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const Rgba8Image image = readPng(png);
     ASSERT_EQ(image.width, 320);
     ASSERT_EQ(image.height, 200);
-    expectNotUniform(image);
+    for (size_t i = 0; i < image.pixels.size(); i += 4)
+        ASSERT_EQ(image.pixels[i] | image.pixels[i + 1] << 8 | image.pixels[i + 2] << 16,
+                  image.pixels[0] | image.pixels[1] << 8 | image.pixels[2] << 16)
+            << "pixel " << i / 4 << " differs: the GUI (or something else) was captured";
 
     const ExrFile file = readExr(exr);
     ASSERT_EQ(file.image.width, 320);
     ASSERT_EQ(file.image.height, 200);
-    // The HDR frame before display encoding: no technique draws yet, so the bottom-right
-    // pixel (far from the overlay) holds the background radiance, in linear units.
-    const size_t corner = (static_cast<size_t>(199) * 320 + 319) * 4;
-    Imath::half r, b;
-    r.setBits(file.image.halfBits[corner]);
-    b.setBits(file.image.halfBits[corner + 2]);
-    EXPECT_NEAR(static_cast<float>(r), 0.02f, 1e-4f);
-    EXPECT_NEAR(static_cast<float>(b), 0.035f, 1e-4f);
+    EXPECT_NEAR(static_cast<float>(halfAt(file, 319, 199, 0)), 0.02f, 1e-4f);
+    EXPECT_NEAR(static_cast<float>(halfAt(file, 319, 199, 2)), 0.035f, 1e-4f);
 
     const auto& a = file.attributes;
     for (const char* name : {"firmament.version", "firmament.resolution", "firmament.view", "firmament.projection",
@@ -63,13 +73,71 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
         EXPECT_TRUE(a.count(name)) << "missing header attribute " << name;
     EXPECT_EQ(std::get<glm::ivec2>(a.at("firmament.resolution")), glm::ivec2(320, 200));
     EXPECT_EQ(std::get<int>(a.at("firmament.frame")), 4);
-    const std::string settings = std::get<std::string>(a.at("firmament.settings"));
-    EXPECT_NE(settings.find("display.resolution = 320x200"), std::string::npos) << settings;
-    EXPECT_NE(settings.find("device.driver = warp"), std::string::npos) << settings;
+    // The settings are the whole state as JSON, loadable again with --settings.
+    const auto settings = nlohmann::json::parse(std::get<std::string>(a.at("firmament.settings")));
+    EXPECT_EQ(settings["camera"]["fieldOfView"], 60.0);
+    EXPECT_EQ(settings["scene"]["orientationGrid"], false);
     EXPECT_NEAR(glm::length(std::get<glm::vec3>(a.at("firmament.directionToSun"))), 1.0f, 1e-5f);
-    // The projection matches the frame's aspect ratio: m[1][1] / m[0][0] = width / height.
+    // The projection matches the frame's aspect ratio (m[1][1] / m[0][0] = width / height)
+    // and the field of view that was set (m[1][1] = 1 / tan(30 degrees)).
     const glm::mat4 projection = std::get<glm::mat4>(a.at("firmament.projection"));
     EXPECT_NEAR(projection[1][1] / projection[0][0], 320.0f / 200.0f, 1e-4f);
+    EXPECT_NEAR(projection[1][1], 1.0f / std::tan(glm::radians(30.0f)), 1e-4f);
+    std::filesystem::remove_all(folder);
+}
+
+// The default scene: the orientation grid, a sky above the horizon and the ground below.
+// A saved state file sets the view: looking down 10 degrees from 500 m.
+TEST(HeadlessRun, DrawsTheOrientationGridFromASettingsFile) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-grid-test";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "view.json") << R"({"camera": {"position": [0, 500, 0], "pitch": -10}, "sun": {"elevation": 45}})";
+    const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--frames", L"2", L"--resolution", L"256x256",
+                                                          L"--settings", (folder / "view.json").wstring(), L"--capture",
+                                                          (folder / "grid.png").wstring()});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("Orientation grid"), std::string::npos) << run.output;
+    const ExrFile file = readExr(folder / "grid.exr");
+    // Top row: 22.5 - 10 = 12.5 degrees above the horizon: sky, bluer than red.
+    EXPECT_GT(static_cast<float>(halfAt(file, 128, 0, 2)), static_cast<float>(halfAt(file, 128, 0, 0)));
+    // Bottom row: ground, lit by a sun 45 degrees high: albedo * (3 sin 45 + 0.15), hazed
+    // by exp(-distance / 60 km) over the 930 m to the ground 32.5 degrees below.
+    const float red = static_cast<float>(halfAt(file, 128, 255, 0));
+    const float groundOrLine = 0.18f * (3.0f * std::sin(glm::radians(45.0f)) + 0.15f);
+    EXPECT_GT(red, groundOrLine * 0.9f);
+    EXPECT_LT(red, 0.60f * (3.0f * std::sin(glm::radians(45.0f)) + 0.15f));
+    expectNotUniform(readPng(folder / "grid.png"));
+    std::filesystem::remove_all(folder);
+}
+
+// Every GUI panel drawn headless and captured with --capture-ui: each capture differs from
+// the same frame without the GUI, and the panels differ from each other.
+TEST(HeadlessRun, EveryPanelIsDrawnAndCapturedWithCaptureUi) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-panels-test";
+    std::filesystem::remove_all(folder);
+    auto capture = [&](const std::wstring& name, std::vector<std::wstring> extra) {
+        std::vector<std::wstring> args{L"--headless", L"--frames", L"3", L"--resolution", L"640x480", L"--capture",
+                                       (folder / (name + L".png")).wstring()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ProcessResult run = runProcess(firmamentExe(), args);
+        EXPECT_EQ(run.exitCode, 0u) << run.output;
+        return readPng(folder / (name + L".png"));
+    };
+    const Rgba8Image plain = capture(L"no-gui", {});
+    std::vector<Rgba8Image> panels;
+    for (const wchar_t* panel : {L"basic", L"additional", L"tone mapping", L"performance"}) {
+        panels.push_back(capture(std::wstring(L"panel-") + panel[0], {L"--capture-ui", L"--set", std::wstring(L"ui.panel=") + panel}));
+        const Rgba8Image& withGui = panels.back();
+        size_t differing = 0;
+        for (size_t i = 0; i < plain.pixels.size(); ++i) differing += plain.pixels[i] != withGui.pixels[i];
+        EXPECT_GT(differing, plain.pixels.size() / 50) << "panel " << std::string(panel, panel + wcslen(panel)) << " is not in the capture";
+    }
+    for (size_t a = 0; a < panels.size(); ++a)
+        for (size_t b = a + 1; b < panels.size(); ++b) EXPECT_NE(panels[a].pixels, panels[b].pixels) << a << " and " << b;
+    // The help window (F1, or ui.help) is drawn over the scene too.
+    const Rgba8Image help = capture(L"help", {L"--capture-ui", L"--set", L"ui.help=on"});
+    EXPECT_NE(help.pixels, panels[0].pixels);
     std::filesystem::remove_all(folder);
 }
 

@@ -1,5 +1,5 @@
 // The program's display-encode pass against the sRGB transfer function on the CPU:
-// every HDR value, clamped to [0,1], encoded within half a step of 8 bits.
+// every HDR value, scaled by 2^EV, clamped to [0,1], encoded within half a step of 8 bits.
 #include "WarpDevice.h"
 #include "gpu/Readback.h"
 #include "gpu/Texture.h"
@@ -19,7 +19,12 @@ double srgbEncode(double linear) {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
-TEST_F(WarpDevice, DisplayEncodeMatchesTheSrgbCurve) {
+class DisplayEncode : public WarpDevice, public ::testing::WithParamInterface<float> {};
+
+TEST_P(DisplayEncode, MatchesTheSrgbCurveAfterExposure) {
+    ToneMappingSettings settings;
+    settings.exposureEv = GetParam();
+    const double scale = std::exp2(static_cast<double>(settings.exposureEv));
     constexpr int kWidth = 256, kHeight = 2;
     // Row 0: a ramp over [-0.5, 1.5] (negative and over-range values clamp).
     // Row 1: a logarithmic ramp from 1e-5 to 1 (the linear toe of the curve included).
@@ -39,19 +44,21 @@ TEST_F(WarpDevice, DisplayEncodeMatchesTheSrgbCurve) {
     const Texture2D output = createColorTexture(device(), kWidth, kHeight, DXGI_FORMAT_R8G8B8A8_UNORM, D3D11_BIND_RENDER_TARGET);
 
     DisplayEncodePass pass(device());
-    pass.render(context(), *productShaderLibrary, hdr.srv.Get(), output.rtv.Get(), kWidth, kHeight);
+    pass.render(context(), *productShaderLibrary, settings, hdr.srv.Get(), output.rtv.Get(), kWidth, kHeight);
     const ReadbackImage image = readTexture2D(device(), context(), output.texture.Get());
 
     double worst = 0.0;
     for (size_t i = 0; i < image.bytes.size(); ++i) {
         if (i % 4 == 3) continue;
-        const double expected = 255.0 * srgbEncode(linear[i]);
+        const double expected = 255.0 * srgbEncode(linear[i] * scale);
         worst = std::max(worst, std::abs(image.bytes[i] - expected));
         ASSERT_LE(std::abs(image.bytes[i] - expected), 0.6) << "texel " << i / 4 << " channel " << i % 4 << " linear "
                                                             << linear[i];
     }
-    std::printf("largest difference from the sRGB curve: %.3f / 255\n", worst);
+    std::printf("EV %+.1f: largest difference from the sRGB curve: %.3f / 255\n", settings.exposureEv, worst);
 }
+
+INSTANTIATE_TEST_SUITE_P(ExposureValues, DisplayEncode, ::testing::Values(0.0f, -1.5f, 2.0f));
 
 }  // namespace
 }  // namespace firmament::test

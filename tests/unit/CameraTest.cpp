@@ -26,7 +26,7 @@ TEST(Camera, NearAndFarPlanesMapToDepthZeroAndOne) {
 TEST(Camera, VerticalFieldOfViewReachesTheTopEdge) {
     Camera camera;
     camera.position = {0.0f, 0.0f, 0.0f};
-    const float halfFov = camera.verticalFovRadians * 0.5f;
+    const float halfFov = glm::radians(camera.verticalFovDegrees) * 0.5f;
     const glm::mat4 viewProjection = camera.projection(2.0f) * camera.view();
     // A point at the top edge of the view frustum at distance 10 lands at clip-space y = 1.
     EXPECT_NEAR(project(viewProjection, {0.0f, 10.0f * std::tan(halfFov), 10.0f}).y, 1.0f, 1e-5f);
@@ -36,11 +36,13 @@ TEST(Camera, VerticalFieldOfViewReachesTheTopEdge) {
 
 TEST(Camera, YawAndPitchTurnTheForwardVector) {
     Camera camera;
-    camera.yawRadians = 1.5707963f;  // 90 degrees: looks along +x
+    camera.yawDegrees = 90.0f;  // looks along +x; right is then -z
     EXPECT_NEAR(camera.forward().x, 1.0f, 1e-6f);
-    camera.pitchRadians = 0.5f;
-    EXPECT_NEAR(camera.forward().y, std::sin(0.5f), 1e-6f);
+    EXPECT_NEAR(camera.right().z, -1.0f, 1e-6f);
+    camera.pitchDegrees = 30.0f;
+    EXPECT_NEAR(camera.forward().y, 0.5f, 1e-6f);
     EXPECT_NEAR(glm::length(camera.forward()), 1.0f, 1e-6f);
+    EXPECT_NEAR(glm::dot(camera.forward(), camera.right()), 0.0f, 1e-6f);
 }
 
 TEST(Camera, SunDirectionFromElevationAndAzimuth) {
@@ -49,6 +51,11 @@ TEST(Camera, SunDirectionFromElevationAndAzimuth) {
     const glm::vec3 east = directionFromElevationAzimuth(0.0f, 1.5707963f);
     EXPECT_NEAR(east.x, 1.0f, 1e-6f);
     EXPECT_NEAR(east.y, 0.0f, 1e-6f);
+    Sun sun;
+    sun.elevationDegrees = 30.0f;
+    sun.azimuthDegrees = -90.0f;
+    EXPECT_NEAR(sun.direction().y, 0.5f, 1e-6f);
+    EXPECT_NEAR(sun.direction().x, -std::cos(glm::radians(30.0f)), 1e-6f);
 }
 
 }  // namespace

@@ -21,7 +21,10 @@ TEST(CommandLine, DefaultsAreAWindowOnTheHardwareAdapter) {
     EXPECT_EQ(p.options.driver, DriverType::Hardware);
     EXPECT_EQ(p.options.width, 1280);
     EXPECT_EQ(p.options.height, 720);
-    EXPECT_TRUE(p.options.vsync);
+    EXPECT_FALSE(p.options.vsync.has_value());  // the settings decide (display.vsync, on by default)
+    EXPECT_FALSE(p.options.captureUi);
+    EXPECT_EQ(p.options.shaderCompiler, "auto");
+    EXPECT_EQ(p.options.stateFile, std::filesystem::path("firmament-state.json"));
     EXPECT_EQ(p.options.frameCount(), 0);  // until the window is closed
 }
 
@@ -36,12 +39,20 @@ TEST(CommandLine, HeadlessUsesWarpAndRendersThirtyFramesByDefault) {
 
 TEST(CommandLine, ParsesEveryValueInBothSpellings) {
     const ParsedCommandLine p = parse({"--frames", "12", "--resolution=320x180", "--vsync", "off", "--capture=out/a.png",
-                                       "--shader-dir", "s", "--adapter=2"});
+                                       "--shader-dir", "s", "--adapter=2", "--capture-ui", "--shader-compiler", "vkd3d",
+                                       "--shader-source=src", "--settings", "a.json", "--set", "camera.yaw=90",
+                                       "--set=sun.elevation=10", "--state-file", "b.json"});
     ASSERT_TRUE(p.error.empty()) << p.error;
     EXPECT_EQ(p.options.frameCount(), 12);
     EXPECT_EQ(p.options.width, 320);
     EXPECT_EQ(p.options.height, 180);
-    EXPECT_FALSE(p.options.vsync);
+    EXPECT_FALSE(*p.options.vsync);
+    EXPECT_TRUE(p.options.captureUi);
+    EXPECT_EQ(p.options.shaderCompiler, "vkd3d");
+    EXPECT_EQ(*p.options.shaderSource, std::filesystem::path("src"));
+    EXPECT_EQ(*p.options.settingsFile, std::filesystem::path("a.json"));
+    EXPECT_EQ(p.options.stateFile, std::filesystem::path("b.json"));
+    EXPECT_EQ(p.options.assignments, (std::vector<std::string>{"camera.yaw=90", "sun.elevation=10"}));
     EXPECT_EQ(p.options.capturePng(), std::filesystem::path("out/a.png"));
     EXPECT_EQ(p.options.captureExr(), std::filesystem::path("out/a.exr"));
     EXPECT_EQ(*p.options.shaderDir, std::filesystem::path("s"));
@@ -64,12 +75,18 @@ TEST(CommandLine, BadInputNamesTheProblem) {
     expectError({"--headless=yes"}, "takes no value");
     expectError({"--warp", "--hardware"}, "exclude each other");
     expectError({"--warp", "--adapter", "0"}, "exclude each other");
+    expectError({"--shader-compiler", "gcc"}, "not one of auto, d3dcompile, vkd3d, fxc, none");
+    expectError({"--set", "fieldOfView=60"}, "section.key=value");
+    expectError({"--set", "camera.fieldOfView"}, "section.key=value");
+    expectError({"--settings", ""}, "the path is empty");
+    expectError({"--capture-ui=yes"}, "takes no value");
 }
 
 TEST(CommandLine, UsageListsEveryOption) {
     const std::string usage = usageText();
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
-                               "--capture", "--shader-dir", "--version", "--help"})
+                               "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
+                               "--shader-source", "--shader-compiler", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 

@@ -1,0 +1,37 @@
+#ifndef FIRMAMENT_SHARED_STRUCTURES_HLSLI
+#define FIRMAMENT_SHARED_STRUCTURES_HLSLI
+// The constant-buffer structures, one definition read by both HLSL and C++ (C++ includes
+// this file; see src/gpu/SharedStructures.h). Rules that keep the two layouts identical:
+//  - members are float4, uint4 or float4x4 only (HLSL never splits them across 16-byte
+//    registers, so no hidden padding appears on either side), scalars packed into a float4
+//    with the use of each component named in a comment;
+//  - matrices are column-major on both sides (GLM's memory order, HLSL's default): mul(M, v)
+//    in HLSL is M * v in C++;
+//  - every structure is followed by FIRMAMENT_CONSTANT_BUFFER(name), a compile-time check in
+//    C++ that its size is a multiple of 16 bytes, as Direct3D requires of constant buffers.
+
+#ifdef __cplusplus
+#define FIRMAMENT_CONSTANT_BUFFER(name) \
+    static_assert(sizeof(name) % 16 == 0, #name " must be a multiple of 16 bytes to be a constant buffer")
+#else
+#define FIRMAMENT_CONSTANT_BUFFER(name)
+#endif
+
+// Per frame, bound to register b0 of every stage that needs it.
+struct FrameConstants {
+    float4x4 viewProjection;         // world (metres) to clip space
+    float4x4 inverseViewProjection;  // clip space to world
+    float4 cameraPosition;           // xyz: metres; w: altitude above the ground (metres)
+    float4 directionToSun;           // xyz: unit vector towards the sun; w: unused
+    float4 screen;                   // xy: size in pixels; zw: 1 / size
+    float4 time;                     // x: seconds since start; yzw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(FrameConstants);
+
+// postfx/display_encode.hlsl
+struct DisplayEncodeConstants {
+    float4 exposure;  // x: linear scale 2^EV applied before encoding; yzw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(DisplayEncodeConstants);
+
+#endif

@@ -1,0 +1,58 @@
+// Orientation grid: until the sky and the terrain exist, something to fly over. A flat
+// ground plane (y = 0) with grid lines every 100 m and every 1 km, lit by the sun with a
+// Lambert term, under a two-colour sky gradient with a sun disc. Not a physical model: the
+// atmosphere and terrain passes replace it (Basic panel, "Orientation grid").
+#include "common/fullscreen_triangle.hlsli"
+#include "common/shared_structures.hlsli"
+
+cbuffer FrameBuffer : register(b0) {
+    FrameConstants frame;
+};
+
+static const float3 kZenithRadiance = float3(0.05, 0.10, 0.30);
+static const float3 kHorizonRadiance = float3(0.35, 0.40, 0.50);
+static const float3 kGroundAlbedo = float3(0.18, 0.20, 0.16);
+static const float3 kLineAlbedo = float3(0.60, 0.60, 0.55);
+static const float3 kSunRadiance = float3(40.0, 38.0, 34.0);
+static const float kCosSunRadius = 0.99985;  // about 1 degree: a disc easy to see
+static const float kHazeDistance = 60000.0;  // metres over which the grid fades into the horizon
+
+// Coverage of grid lines of the given spacing and width at `position` (metres), filtered by
+// the pixel's footprint so distant lines fade instead of flickering.
+float gridLines(float2 position, float spacing, float width) {
+    float2 cell = position / spacing;
+    float2 footprint = max(fwidth(cell), 1e-5);
+    float2 distanceToLine = abs(frac(cell + 0.5) - 0.5);
+    float2 coverage = 1.0 - saturate((distanceToLine - width / spacing * 0.5) / footprint);
+    float fade = saturate(1.0 - max(footprint.x, footprint.y) * 2.0);
+    return max(coverage.x, coverage.y) * fade;
+}
+
+float3 skyRadiance(float3 direction) {
+    float3 sky = lerp(kHorizonRadiance, kZenithRadiance, sqrt(saturate(direction.y)));
+    float3 sun = dot(direction, frame.directionToSun.xyz) > kCosSunRadius ? kSunRadiance : 0.0;
+    return sky * saturate(frame.directionToSun.y * 4.0 + 0.25) + sun;
+}
+
+FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
+    return fullscreenTriangle(vertexId);
+}
+
+float4 ps_main(FullscreenVertex input) : SV_Target {
+    float2 ndc = float2(input.uv.x * 2.0 - 1.0, 1.0 - input.uv.y * 2.0);
+    float4 farPoint = mul(frame.inverseViewProjection, float4(ndc, 1.0, 1.0));
+    float3 direction = normalize(farPoint.xyz / farPoint.w - frame.cameraPosition.xyz);
+    float3 radiance = skyRadiance(direction);
+
+    if (direction.y < 0.0) {
+        float distance = frame.cameraPosition.y / -direction.y;
+        float2 ground = frame.cameraPosition.xz + direction.xz * distance;
+        float lines = max(gridLines(ground, 100.0, 2.0), gridLines(ground, 1000.0, 12.0));
+        float3 albedo = lerp(kGroundAlbedo, kLineAlbedo, lines);
+        float sunLight = saturate(frame.directionToSun.y);
+        float3 lit = albedo * (sunLight * 3.0 + 0.15);
+        float haze = 1.0 - exp(-distance / kHazeDistance);
+        radiance = lerp(lit, skyRadiance(float3(direction.x, 0.0, direction.z)) * 0.8, haze);
+    }
+    return float4(radiance, 1.0);
+}

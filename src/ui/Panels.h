@@ -1,0 +1,44 @@
+#pragma once
+// The GUI's content: the panel chosen in the drop-down at the top (Basic, Additional, Tone
+// mapping, Performance), the shader-error window and the F1 help window. What the GUI asks
+// the program to do (full screen, reload, save, load) comes back as GuiRequests.
+#include "app/State.h"
+#include "gpu/GpuProfiler.h"
+#include "ui/FrameTimeHistory.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace firmament {
+
+struct FrameStats {
+    double cpuFrameMs = 0.0;
+    double framesPerSecond = 0.0;
+    int width = 0;
+    int height = 0;
+    std::string adapter;
+};
+
+struct GuiModel {
+    State& state;
+    FrameStats stats;
+    const std::vector<PassTiming>& timings;
+    const FrameTimeHistory& frameTimes;
+    const std::map<std::string, std::string>& shaderErrors;
+    std::string shaderCompiler;        // the hot-reload backend's name, empty when off
+    std::vector<std::string> devices;  // connected HID devices and pads
+    std::string notice;                // the last save / load / reload message
+    bool noticeIsError = false;
+};
+
+struct GuiRequests {
+    bool toggleFullScreen = false;
+    bool reloadShaders = false;
+    bool saveState = false;
+    bool loadState = false;
+};
+
+GuiRequests drawGui(GuiModel& model);
+
+}  // namespace firmament

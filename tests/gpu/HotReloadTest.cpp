@@ -1,0 +1,135 @@
+// Hot reload end to end on the WARP device: the test shaders' "reload" technique is copied
+// to a temporary folder and compiled from there by the backend the program would pick
+// (vkd3d-compiler under Wine, D3DCompile on Windows). Edits change what is drawn; a broken
+// edit keeps the previous shaders and reports the compiler's message; fixing it recovers;
+// a technique's shaders are replaced all together or not at all.
+#include "WarpDevice.h"
+#include "gpu/D3DCompileShaders.h"
+#include "gpu/SourceShaderCompilers.h"
+#include "gpu/Texture.h"
+
+#include <fstream>
+
+namespace firmament::test {
+namespace {
+
+const ShaderKey kVertex{"reload/solid_color.hlsl", "vs_main", "vs_5_0", {}};
+const ShaderKey kSolid{"reload/solid_color.hlsl", "ps_main", "ps_5_0", {}};
+const ShaderKey kTint{"reload/tint.hlsl", "ps_main", "ps_5_0", {}};
+
+using Rgba = std::array<std::uint8_t, 4>;
+
+class HotReload : public WarpDevice {
+protected:
+    void SetUp() override {
+        WarpDevice::SetUp();
+        const auto sourceRoot = PrecompiledShaders(testShaders()).sourceRoot();
+        ASSERT_TRUE(sourceRoot.has_value()) << "the test manifest names no #source folder";
+        root = std::filesystem::temp_directory_path() / "firmament-hot-reload-test";
+        std::filesystem::remove_all(root);
+        std::filesystem::create_directories(root / "reload");
+        std::filesystem::copy(*sourceRoot / "reload", root / "reload", std::filesystem::copy_options::recursive);
+        output = createColorTexture(device(), 4, 4, DXGI_FORMAT_R8G8B8A8_UNORM, D3D11_BIND_RENDER_TARGET);
+    }
+
+    void write(const std::string& file, const std::string& text) { std::ofstream(root / file, std::ios::binary) << text; }
+    void setColor(const std::string& hlslColor) { write("reload/color.hlsli", "#define RELOAD_COLOR " + hlslColor + "\n"); }
+
+    // Draws a full-screen triangle with `pixel` from `library` and reads one texel.
+    Rgba draw(ShaderLibrary& library, const ShaderKey& pixel) {
+        const D3D11_VIEWPORT viewport{0.0f, 0.0f, 4.0f, 4.0f, 0.0f, 1.0f};
+        ID3D11RenderTargetView* target = output.rtv.Get();
+        context()->OMSetRenderTargets(1, &target, nullptr);
+        context()->RSSetViewports(1, &viewport);
+        context()->IASetInputLayout(nullptr);
+        context()->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+        context()->VSSetShader(library.vertexShader(kVertex), nullptr, 0);
+        context()->PSSetShader(library.pixelShader(pixel), nullptr, 0);
+        context()->Draw(3, 0);
+        const ReadbackImage image = readTexture2D(device(), context(), output.texture.Get());
+        return {image.bytes[0], image.bytes[1], image.bytes[2], image.bytes[3]};
+    }
+
+    std::unique_ptr<ShaderLibrary> reloadingLibrary() {
+        auto library = std::make_unique<ShaderLibrary>(device(), std::make_unique<PrecompiledShaders>(testShaders()));
+        auto compiler = makeSourceCompiler(SourceCompilerChoice::Auto, root);
+        if (!compiler) return nullptr;
+        std::printf("hot reload backend: %s\n", compiler->name().c_str());
+        library->enableHotReload(std::move(compiler), root);
+        return library;
+    }
+
+    std::filesystem::path root;
+    Texture2D output;
+};
+
+TEST_F(HotReload, EditsChangeTheOutputAndBrokenEditsKeepThePreviousShader) {
+    auto library = reloadingLibrary();
+    if (!library) GTEST_SKIP() << "no shader compiler on this machine";
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{64, 128, 191, 255}));  // precompiled: float3(0.25, 0.5, 0.75)
+    EXPECT_FALSE(library->reloadChanged().attempted());             // nothing changed yet
+
+    setColor("float3(1.0, 0.0, 0.5)");  // an edit of an included file
+    ReloadResult result = library->reloadChanged();
+    EXPECT_EQ(result.techniquesReloaded, 1);
+    EXPECT_EQ(result.shadersCompiled, 2);  // both permutations of the technique that are loaded
+    EXPECT_TRUE(library->errors().empty());
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{255, 0, 128, 255}));
+
+    setColor("float3(1.0, 0.0, ");  // a syntax error
+    result = library->reloadChanged();
+    EXPECT_EQ(result.failedTechniques, std::vector<std::string>{"reload"});
+    ASSERT_EQ(library->errors().count("reload"), 1u);
+    const std::string message = library->errors().at("reload");
+    EXPECT_NE(message.find("reload/solid_color.hlsl|ps_main|ps_5_0|"), std::string::npos) << message;
+    EXPECT_GT(message.size(), 60u) << "the compiler's own message is missing: " << message;
+    std::printf("reported compiler message:\n%s\n", message.c_str());
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{255, 0, 128, 255}));  // the previous shader still runs
+
+    setColor("float3(0.0, 1.0, 0.0)");  // fixed
+    result = library->reloadChanged();
+    EXPECT_EQ(result.techniquesReloaded, 1);
+    EXPECT_TRUE(library->errors().empty());
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{0, 255, 0, 255}));
+}
+
+TEST_F(HotReload, ATechniqueIsReplacedAllTogetherOrNotAtAll) {
+    auto library = reloadingLibrary();
+    if (!library) GTEST_SKIP() << "no shader compiler on this machine";
+    EXPECT_EQ(draw(*library, kTint), (Rgba{0, 0, 255, 255}));
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{64, 128, 191, 255}));
+
+    // A good edit of one shader and a broken edit of the other, in the same technique.
+    setColor("float3(1.0, 1.0, 1.0)");
+    write("reload/tint.hlsl", "float4 ps_main() : SV_Target { return undeclared_value; }\n");
+    const ReloadResult result = library->reloadAll();  // F8
+    EXPECT_EQ(result.failedTechniques, std::vector<std::string>{"reload"});
+    EXPECT_NE(library->errors().at("reload").find("reload/tint.hlsl"), std::string::npos);
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{64, 128, 191, 255})) << "the good edit must wait for the whole technique";
+    EXPECT_EQ(draw(*library, kTint), (Rgba{0, 0, 255, 255}));
+
+    write("reload/tint.hlsl", "float4 ps_main() : SV_Target { return float4(1.0, 0.0, 0.0, 1.0); }\n");
+    EXPECT_EQ(library->reloadAll().techniquesReloaded, 1);
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{255, 255, 255, 255}));
+    EXPECT_EQ(draw(*library, kTint), (Rgba{255, 0, 0, 255}));
+}
+
+// D3DCompile, the default backend on Windows. Wine's own d3dcompiler_47 compiles a shader
+// this simple; on Windows it is Microsoft's.
+TEST_F(HotReload, D3DCompileBackendCompilesFromTheSourceFolder) {
+    if (!D3DCompileShaders::available()) GTEST_SKIP() << "d3dcompiler_47.dll is not on this machine";
+    D3DCompileShaders compiler(root);
+    setColor("float3(0.0, 0.0, 1.0)");
+    auto library = std::make_unique<ShaderLibrary>(device(), std::make_unique<PrecompiledShaders>(testShaders()));
+    library->enableHotReload(std::make_unique<D3DCompileShaders>(root), root);
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{64, 128, 191, 255}));
+    EXPECT_EQ(library->reloadAll().techniquesReloaded, 1) << (library->errors().empty() ? "" : library->errors().begin()->second);
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{0, 0, 255, 255}));
+
+    const CompileResult broken = compiler.compile({"reload/missing.hlsl", "ps_main", "ps_5_0", {}});
+    EXPECT_FALSE(broken.ok);
+    EXPECT_NE(broken.log.find("missing.hlsl"), std::string::npos) << broken.log;
+}
+
+}  // namespace
+}  // namespace firmament::test
