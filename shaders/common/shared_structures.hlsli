@@ -21,6 +21,8 @@
 struct FrameConstants {
     float4x4 viewProjection;         // world (metres) to clip space
     float4x4 inverseViewProjection;  // clip space to world
+    float4x4 clipToDirection;        // clip space to a world-space view direction (the camera's
+                                     // translation left out, for precision far from the origin)
     float4 cameraPosition;           // xyz: metres; w: altitude above the ground (metres)
     float4 directionToSun;           // xyz: unit vector towards the sun; w: unused
     float4 screen;                   // xy: size in pixels; zw: 1 / size

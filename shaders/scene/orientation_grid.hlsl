@@ -1,5 +1,5 @@
 // Orientation grid: until the sky and the terrain exist, something to fly over. A flat
-// ground plane (y = 0) with grid lines every 100 m and every 1 km, lit by the sun with a
+// ground plane (y = 0) with grid lines every 100 m, 1 km and 10 km, lit by the sun with a
 // Lambert term, under a two-colour sky gradient with a sun disc. Not a physical model: the
 // atmosphere and terrain passes replace it (Basic panel, "Orientation grid").
 #include "common/fullscreen_triangle.hlsli"
@@ -40,14 +40,14 @@ FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
 
 float4 ps_main(FullscreenVertex input) : SV_Target {
     float2 ndc = float2(input.uv.x * 2.0 - 1.0, 1.0 - input.uv.y * 2.0);
-    float4 farPoint = mul(frame.inverseViewProjection, float4(ndc, 1.0, 1.0));
-    float3 direction = normalize(farPoint.xyz / farPoint.w - frame.cameraPosition.xyz);
+    float4 farPoint = mul(frame.clipToDirection, float4(ndc, 1.0, 1.0));
+    float3 direction = normalize(farPoint.xyz / farPoint.w);
     float3 radiance = skyRadiance(direction);
 
     if (direction.y < 0.0) {
         float distance = frame.cameraPosition.y / -direction.y;
         float2 ground = frame.cameraPosition.xz + direction.xz * distance;
-        float lines = max(gridLines(ground, 100.0, 2.0), gridLines(ground, 1000.0, 12.0));
+        float lines = max(max(gridLines(ground, 100.0, 2.0), gridLines(ground, 1000.0, 12.0)), gridLines(ground, 10000.0, 120.0));
         float3 albedo = lerp(kGroundAlbedo, kLineAlbedo, lines);
         float sunLight = saturate(frame.directionToSun.y);
         float3 lit = albedo * (sunLight * 3.0 + 0.15);

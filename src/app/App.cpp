@@ -9,6 +9,7 @@
 #include "gpu/SourceShaderCompilers.h"
 #include "FirmamentVersion.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -58,7 +59,7 @@ std::optional<int> digitKey(WPARAM key) {
 
 }  // namespace
 
-App::App(const Options& options, const State& state)
+App::App(const Options& options, const State& state, std::optional<FlightPath> flight)
     : options_(checkedOptions(options)),
       state_(state),
       shaderSource_(openShaderFolder(options_)),
@@ -71,8 +72,10 @@ App::App(const Options& options, const State& state)
       profiler_(device_.device(), device_.context()),
       frameConstantBuffer_(device_.device()),
       orientationGrid_(device_.device()),
-      displayEncode_(device_.device()) {
+      displayEncode_(device_.device()),
+      flight_(std::move(flight)) {
     log::info("device: " + device_.describe());
+    if (options_.recordFlight) ensureWritable(*options_.recordFlight);
 
     // Hot reload compiles from the HLSL folder the build used, unless told otherwise.
     const auto& precompiled = static_cast<const PrecompiledShaders&>(shaders_.compiler());
@@ -193,7 +196,12 @@ void App::handleRequests(const GuiRequests& requests) {
 }
 
 int App::run() {
-    const int frames = options_.frameCount();
+    // A headless flight renders its whole length (at the fixed 60 Hz step) unless --frames says otherwise.
+    const int frames = flight_ && options_.headless && !options_.frames
+                           ? static_cast<int>(std::ceil(flight_->duration() * 60.0)) + 1
+                           : options_.frameCount();
+    if (flight_) log::info("playing a flight of " + std::to_string(flight_->size()) + " keyframes over " +
+                           std::to_string(flight_->duration()) + " s");
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         if (!window_->processMessages()) break;
         if (window_->minimized()) {
@@ -217,6 +225,12 @@ int App::run() {
         renderFrame(options_.captureUi);
         captureFrame();
     }
+    if (options_.recordFlight) {
+        if (recording_.size() == 0 || timer_.totalSeconds() > recording_.duration() + 0.001)
+            recording_.add(timer_.totalSeconds(), state_.camera, state_.sun);  // where the flight ended
+        recording_.save(*options_.recordFlight);
+        log::info("flight of " + std::to_string(recording_.size()) + " keyframes written to " + options_.recordFlight->string());
+    }
     printTimings();
     return 0;
 }
@@ -235,14 +249,27 @@ void App::update() {
     FlightInput input = keyboardMouse_.takeFrameInput(state_.flight);
     input += hidDevices_.poll(now, state_.devices);
     input += xinputPads_.poll(now, state_.devices);
-    fly(state_.camera, state_.sun, state_.flight, input, dt);
+    if (flight_ && now <= flight_->duration()) {
+        const Bookmark view = flight_->at(now);  // the recorded path drives; input waits for its end
+        state_.camera = view.camera;
+        state_.sun = view.sun;
+    } else {
+        fly(state_.camera, state_.sun, state_.flight, input, dt);
+    }
+    constexpr double kRecordPeriodSeconds = 0.1;
+    if (options_.recordFlight && (recording_.size() == 0 || now >= recording_.duration() + kRecordPeriodSeconds))
+        recording_.add(now, state_.camera, state_.sun);
 }
 
 gpu::FrameConstants App::frameConstants() const {
-    const glm::mat4 viewProjection = state_.camera.projection(static_cast<float>(width_) / static_cast<float>(height_)) * state_.camera.view();
+    const glm::mat4 projection = state_.camera.projection(static_cast<float>(width_) / static_cast<float>(height_));
+    const glm::mat4 viewProjection = projection * state_.camera.view();
+    glm::mat4 rotationOnly = state_.camera.view();
+    rotationOnly[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     gpu::FrameConstants c{};
     c.viewProjection = viewProjection;
     c.inverseViewProjection = glm::inverse(viewProjection);
+    c.clipToDirection = glm::inverse(projection * rotationOnly);
     c.cameraPosition = glm::vec4(state_.camera.position, state_.camera.position.y);
     c.directionToSun = glm::vec4(state_.sun.direction(), 0.0f);
     c.screen = glm::vec4(static_cast<float>(width_), static_cast<float>(height_), 1.0f / static_cast<float>(width_),

@@ -2,6 +2,7 @@
 // The program: window, device, swap chain (or an off-screen target when headless), the
 // frame targets, input, and the passes run in frame order. Owns nothing a technique can own.
 #include "app/CommandLine.h"
+#include "app/FlightPath.h"
 #include "app/State.h"
 #include "app/StepTimer.h"
 #include "app/Window.h"
@@ -26,7 +27,8 @@ namespace firmament {
 
 class App {
 public:
-    App(const Options& options, const State& state);  // throws Error
+    // `flight`: a camera path to play back first (--flight).
+    App(const Options& options, const State& state, std::optional<FlightPath> flight);  // throws Error
     int run();                                         // returns the exit code
 
 private:
@@ -71,6 +73,8 @@ private:
     int width_ = 0;
     int height_ = 0;
 
+    std::optional<FlightPath> flight_;
+    FlightPath recording_;
     StepTimer timer_;
     FrameTimeHistory frameTimes_;
     double lastSourcePoll_ = 0.0;

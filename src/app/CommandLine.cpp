@@ -139,7 +139,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
                 return result;
             }
             o.shaderCompiler = *v;
-        } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file") {
+        } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file" || flag == "--flight" ||
+                   flag == "--record-flight") {
             const auto v = value();
             if (!v) return result;
             if (v->empty()) {
@@ -148,6 +149,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             }
             if (flag == "--shader-source") o.shaderSource = std::filesystem::path(*v);
             else if (flag == "--settings") o.settingsFile = std::filesystem::path(*v);
+            else if (flag == "--flight") o.flight = std::filesystem::path(*v);
+            else if (flag == "--record-flight") o.recordFlight = std::filesystem::path(*v);
             else o.stateFile = std::filesystem::path(*v);
         } else if (flag == "--set") {
             const auto v = value();
@@ -209,6 +212,9 @@ Settings
                          for example --set camera.fieldOfView=60
   --state-file FILE      where F5 saves and F9 loads the state
                          (default firmament-state.json in the working folder)
+  --flight FILE          play a recorded camera flight (JSON keyframes); headless
+                         runs render its whole length unless --frames is given
+  --record-flight FILE   write the camera and sun, ten keyframes a second, on exit
 Shaders
   --shader-dir DIR       compiled shaders (default: 'shaders' beside the program)
   --shader-source DIR    HLSL folder that F8 and file changes reload from

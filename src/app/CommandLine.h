@@ -26,6 +26,8 @@ struct Options {
     std::optional<std::filesystem::path> settingsFile;  // loaded at start
     std::vector<std::string> assignments;               // --set section.key=value, in order
     std::filesystem::path stateFile = "firmament-state.json";  // F5 saves it, F9 loads it
+    std::optional<std::filesystem::path> flight;        // camera path played back
+    std::optional<std::filesystem::path> recordFlight;  // where the flown path is written
     bool help = false;
     bool version = false;
 

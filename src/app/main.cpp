@@ -2,6 +2,7 @@
 // message and a non-zero exit code (1 runtime error, 2 bad command line or settings).
 #include "app/App.h"
 #include "app/CommandLine.h"
+#include "app/FlightPath.h"
 #include "app/State.h"
 #include "core/Error.h"
 #include "core/Log.h"
@@ -44,7 +45,9 @@ int main() {
         return 0;
     }
     State state;
+    std::optional<FlightPath> flight;
     try {
+        if (parsed.options.flight) flight = FlightPath::load(*parsed.options.flight);
         if (parsed.options.settingsFile) loadStateFile(state, *parsed.options.settingsFile);
         if (parsed.options.vsync) state.display.vsync = *parsed.options.vsync;
         applyAssignments(state, parsed.options.assignments);
@@ -53,7 +56,7 @@ int main() {
         return 2;
     }
     try {
-        App app(parsed.options, state);
+        App app(parsed.options, state, std::move(flight));
         return app.run();
     } catch (const Error& e) {
         log::error(e.what());

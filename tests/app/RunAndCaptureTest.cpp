@@ -141,6 +141,31 @@ TEST(HeadlessRun, EveryPanelIsDrawnAndCapturedWithCaptureUi) {
     std::filesystem::remove_all(folder);
 }
 
+// A recorded flight plays back headless over its whole length, and a run can record one.
+TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-flight-run";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "flight.json") << R"({"keyframes": [
+        {"time": 0, "camera": {"position": [0, 100, 0], "yaw": 0}},
+        {"time": 0.5, "camera": {"position": [0, 2100, 1000], "yaw": 90}}]})";
+    const ProcessResult run =
+        runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
+                                    L"--record-flight", (folder / "recorded.json").wstring(), L"--capture",
+                                    (folder / "end.png").wstring()});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("GPU time per pass over 31 frames"), std::string::npos) << run.output;  // 0.5 s at 60 Hz, both ends
+    // The last frame is the last keyframe: the view matrix moves (0, 2100, 1000) to the origin.
+    const glm::mat4 view = std::get<glm::mat4>(readExr(folder / "end.exr").attributes.at("firmament.view"));
+    const glm::vec4 eye = view * glm::vec4(0.0f, 2100.0f, 1000.0f, 1.0f);
+    EXPECT_NEAR(glm::length(glm::vec3(eye)), 0.0f, 1e-2f);
+    // The recording holds the same path, ten keyframes a second.
+    const auto recorded = nlohmann::json::parse(std::ifstream(folder / "recorded.json"));
+    ASSERT_GE(recorded["keyframes"].size(), 5u);
+    EXPECT_EQ(recorded["keyframes"].back()["camera"]["yaw"], 90.0);
+    std::filesystem::remove_all(folder);
+}
+
 // A visible window: the flip-model swap chain, presentation without VSync, and the capture
 // read from the back buffer before it is presented.
 TEST(WindowedRun, PresentsThroughTheSwapChainAndCaptures) {

@@ -14,7 +14,7 @@ TEST_F(WarpDevice, FrameConstantsHaveTheSameLayoutInHlslAndCpp) {
     ConstantBuffer<gpu::FrameConstants> buffer(device());
     buffer.update(context(), constants);
 
-    auto output = structuredBuffer(std::vector<glm::vec4>(12, glm::vec4(-1.0f)), true);
+    auto output = structuredBuffer(std::vector<glm::vec4>(16, glm::vec4(-1.0f)), true);
     ComPtr<ID3D11UnorderedAccessView> uav;
     ASSERT_HRESULT_SUCCEEDED(device()->CreateUnorderedAccessView(output.Get(), nullptr, &uav));
     context()->CSSetShader(testShaderLibrary->computeShader({"constants/echo_frame_constants.hlsl", "main", "cs_5_0", {}}), nullptr, 0);
@@ -28,11 +28,12 @@ TEST_F(WarpDevice, FrameConstantsHaveTheSameLayoutInHlslAndCpp) {
         for (int column = 0; column < 4; ++column) {
             EXPECT_EQ(echoed[row][column], constants.viewProjection[column][row]) << "viewProjection " << row << "," << column;
             EXPECT_EQ(echoed[4 + row][column], constants.inverseViewProjection[column][row]);
+            EXPECT_EQ(echoed[8 + row][column], constants.clipToDirection[column][row]);
         }
-    EXPECT_EQ(echoed[8], constants.cameraPosition);
-    EXPECT_EQ(echoed[9], constants.directionToSun);
-    EXPECT_EQ(echoed[10], constants.screen);
-    EXPECT_EQ(echoed[11], constants.time);
+    EXPECT_EQ(echoed[12], constants.cameraPosition);
+    EXPECT_EQ(echoed[13], constants.directionToSun);
+    EXPECT_EQ(echoed[14], constants.screen);
+    EXPECT_EQ(echoed[15], constants.time);
 }
 
 }  // namespace

@@ -15,9 +15,10 @@ void main() {
     for (uint row = 0; row < 4; ++row) {
         echoed[row] = frame.viewProjection[row];
         echoed[4 + row] = frame.inverseViewProjection[row];
+        echoed[8 + row] = frame.clipToDirection[row];
     }
-    echoed[8] = frame.cameraPosition;
-    echoed[9] = frame.directionToSun;
-    echoed[10] = frame.screen;
-    echoed[11] = frame.time;
+    echoed[12] = frame.cameraPosition;
+    echoed[13] = frame.directionToSun;
+    echoed[14] = frame.screen;
+    echoed[15] = frame.time;
 }

@@ -1,0 +1,35 @@
+#pragma once
+// A recorded camera flight: keyframes of camera and sun over time, played back by
+// --flight FILE (the demo's headless run, benchmarks) and written by --record-flight FILE
+// from a person's flight. Between keyframes everything is interpolated linearly (yaw and
+// azimuth the short way round).
+//
+//   {"format": 1, "keyframes": [{"time": 0, "camera": {...}, "sun": {...}}, ...]}
+#include "app/State.h"
+
+#include <filesystem>
+#include <vector>
+
+namespace firmament {
+
+struct FlightKeyframe {
+    double time = 0.0;  // seconds from the start
+    Bookmark view;
+};
+
+class FlightPath {
+public:
+    // Throws SettingsError naming the keyframe and key; keyframes must be in time order.
+    static FlightPath load(const std::filesystem::path& path);
+    void save(const std::filesystem::path& path) const;
+
+    void add(double time, const Camera& camera, const Sun& sun);
+    Bookmark at(double time) const;  // clamped to the first and last keyframes
+    double duration() const { return keyframes_.empty() ? 0.0 : keyframes_.back().time; }
+    size_t size() const { return keyframes_.size(); }
+
+private:
+    std::vector<FlightKeyframe> keyframes_;
+};
+
+}  // namespace firmament
