@@ -34,10 +34,10 @@ std::optional<std::string> hostPath(const std::filesystem::path& path) {
     const auto toUnix = kernel32 ? reinterpret_cast<ToUnix>(reinterpret_cast<void*>(GetProcAddress(kernel32, "wine_get_unix_file_name")))
                                  : nullptr;
     if (!toUnix) return std::nullopt;
-    char* unix = toUnix(std::filesystem::absolute(path).wstring().c_str());
-    if (!unix) return std::nullopt;
-    std::string result(unix);
-    HeapFree(GetProcessHeap(), 0, unix);  // wine_get_unix_file_name allocates on the process heap
+    char* hostName = toUnix(std::filesystem::absolute(path).wstring().c_str());
+    if (!hostName) return std::nullopt;
+    std::string result(hostName);
+    HeapFree(GetProcessHeap(), 0, hostName);  // wine_get_unix_file_name allocates on the process heap
     return result;
 }
 

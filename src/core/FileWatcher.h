@@ -2,6 +2,7 @@
 // Notices files that change on disk, by polling their write time and size (a few dozen
 // shader files, a few times a second: cheaper and more dependable than change
 // notifications, which editors that save by renaming defeat, and which Wine maps loosely).
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <vector>
