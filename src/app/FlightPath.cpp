@@ -14,11 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-std::vector<SettingsSection> viewSections(Bookmark& view) {
-    return {{"camera", [&view](SettingsVisitor& v) { view.camera.visit(v); }},
-            {"sun", [&view](SettingsVisitor& v) { view.sun.visit(v); }}};
-}
-
 float lerpDegreesShortWay(float a, float b, float t) {
     float delta = std::fmod(b - a + 540.0f, 360.0f) - 180.0f;
     float angle = a + delta * t;
@@ -52,7 +47,7 @@ FlightPath FlightPath::load(const std::filesystem::path& path) {
         frame.erase("time");
         Bookmark view = previous;  // keys left out keep the previous keyframe's values
         try {
-            settingsFromJson(frame, viewSections(view));
+            settingsFromJson(frame, view.sections());
         } catch (const SettingsError& e) {
             throw SettingsError(name + "." + e.what());
         }
@@ -65,7 +60,7 @@ FlightPath FlightPath::load(const std::filesystem::path& path) {
 void FlightPath::save(const std::filesystem::path& path) const {
     json frames = json::array();
     for (FlightKeyframe frame : keyframes_) {
-        json entry = settingsToJson(viewSections(frame.view));
+        json entry = settingsToJson(frame.view.sections());
         entry["time"] = std::round(frame.time * 1000.0) / 1000.0;
         frames.push_back(entry);
     }

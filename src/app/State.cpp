@@ -7,14 +7,9 @@ namespace firmament {
 
 using nlohmann::json;
 
-namespace {
-
-std::vector<SettingsSection> bookmarkSections(Bookmark& bookmark) {
-    return {{"camera", [&bookmark](SettingsVisitor& v) { bookmark.camera.visit(v); }},
-            {"sun", [&bookmark](SettingsVisitor& v) { bookmark.sun.visit(v); }}};
+std::vector<SettingsSection> Bookmark::sections() {
+    return {{"camera", [this](SettingsVisitor& v) { camera.visit(v); }}, {"sun", [this](SettingsVisitor& v) { sun.visit(v); }}};
 }
-
-}  // namespace
 
 std::vector<SettingsSection> State::sections() {
     return {{"display", [this](SettingsVisitor& v) { display.visit(v); }},
@@ -44,7 +39,7 @@ json stateToJson(State& state) {
     json bookmarks = json::object();
     for (int slot = 1; slot <= kBookmarkSlots; ++slot) {
         auto& bookmark = state.bookmarks[static_cast<size_t>(slot - 1)];
-        if (bookmark) bookmarks[std::to_string(slot)] = settingsToJson(bookmarkSections(*bookmark));
+        if (bookmark) bookmarks[std::to_string(slot)] = settingsToJson(bookmark->sections());
     }
     if (!bookmarks.empty()) out["bookmarks"] = bookmarks;
     return out;
@@ -67,7 +62,7 @@ void stateFromJson(State& state, const json& in) {
             if (!index) throw SettingsError("bookmarks: '" + slot + "' is not a slot from 1 to 9");
             Bookmark bookmark{next.camera, next.sun};
             try {
-                settingsFromJson(value, bookmarkSections(bookmark));
+                settingsFromJson(value, bookmark.sections());
             } catch (const SettingsError& e) {
                 throw SettingsError("bookmarks." + slot + "." + e.what());
             }

@@ -49,6 +49,8 @@ struct UiSettings {
 struct Bookmark {
     Camera camera;
     Sun sun;
+
+    std::vector<SettingsSection> sections();  // "camera" and "sun", as in the state file
 };
 
 inline constexpr int kBookmarkSlots = 9;

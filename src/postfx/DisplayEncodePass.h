@@ -2,6 +2,7 @@
 // Writes the HDR frame to the 8-bit output target, scaled by the exposure, clamped and sRGB
 // encoded (shaders/postfx/display_encode.hlsl). Tone mapping will take its place in the frame.
 #include "gpu/ConstantBuffer.h"
+#include "gpu/FullscreenPass.h"
 #include "gpu/ShaderLibrary.h"
 #include "gpu/SharedStructures.h"
 #include "postfx/ToneMappingSettings.h"
@@ -18,8 +19,7 @@ public:
                 ID3D11ShaderResourceView* hdrFrame, ID3D11RenderTargetView* output, int width, int height);
 
 private:
-    ComPtr<ID3D11RasterizerState> rasterizer_;
-    ComPtr<ID3D11DepthStencilState> noDepth_;
+    FullscreenPass fullscreen_;
     ConstantBuffer<gpu::DisplayEncodeConstants> constants_;
 };
 

@@ -3,6 +3,7 @@
 // ground plane with 100 m and 1 km lines under a sky gradient and a sun disc, so the camera
 // and the sun can be flown and checked before the atmosphere and terrain exist.
 #include "core/Settings.h"
+#include "gpu/FullscreenPass.h"
 #include "gpu/ShaderLibrary.h"
 
 #include <d3d11.h>
@@ -24,8 +25,7 @@ public:
                 ID3D11RenderTargetView* hdrFrame, int width, int height);
 
 private:
-    ComPtr<ID3D11RasterizerState> rasterizer_;
-    ComPtr<ID3D11DepthStencilState> noDepth_;
+    FullscreenPass fullscreen_;
 };
 
 }  // namespace firmament

@@ -1,0 +1,36 @@
+#include "gpu/FullscreenPass.h"
+
+#include "gpu/Hresult.h"
+
+namespace firmament {
+
+FullscreenPass::FullscreenPass(ID3D11Device* device) {
+    D3D11_RASTERIZER_DESC raster{};
+    raster.FillMode = D3D11_FILL_SOLID;
+    raster.CullMode = D3D11_CULL_NONE;
+    raster.DepthClipEnable = TRUE;
+    check(device->CreateRasterizerState(&raster, &rasterizer_), "CreateRasterizerState (full-screen pass)");
+    D3D11_DEPTH_STENCIL_DESC depth{};
+    depth.DepthEnable = FALSE;
+    check(device->CreateDepthStencilState(&depth, &noDepth_), "CreateDepthStencilState (full-screen pass)");
+}
+
+void FullscreenPass::bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height) const {
+    const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
+    context->OMSetRenderTargets(1, &target, nullptr);
+    context->OMSetDepthStencilState(noDepth_.Get(), 0);
+    context->OMSetBlendState(nullptr, nullptr, 0xffffffff);
+    context->RSSetState(rasterizer_.Get());
+    context->RSSetViewports(1, &viewport);
+    context->IASetInputLayout(nullptr);
+    context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+}
+
+void FullscreenPass::draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& vertexShader,
+                          const ShaderKey& pixelShader) const {
+    context->VSSetShader(shaders.vertexShader(vertexShader), nullptr, 0);
+    context->PSSetShader(shaders.pixelShader(pixelShader), nullptr, 0);
+    context->Draw(3, 0);
+}
+
+}  // namespace firmament

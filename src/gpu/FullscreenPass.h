@@ -1,0 +1,28 @@
+#pragma once
+// The pipeline state every full-screen pass shares: one triangle from SV_VertexID
+// (shaders/common/fullscreen_triangle.hlsli), no depth, no blending, no culling. A pass
+// calls bindTarget(), then binds its own constants and resources, then calls draw(). The
+// target comes first: binding it unbinds any view of the same texture still bound as an
+// input, so a texture that was the previous pass's target must be bound after it.
+#include "gpu/ShaderLibrary.h"
+
+#include <d3d11.h>
+
+namespace firmament {
+
+class FullscreenPass {
+public:
+    explicit FullscreenPass(ID3D11Device* device);
+
+    // Sets the target, the viewport and the fixed-function states.
+    void bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height) const;
+    // Sets the two shaders and draws the triangle.
+    void draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& vertexShader,
+              const ShaderKey& pixelShader) const;
+
+private:
+    ComPtr<ID3D11RasterizerState> rasterizer_;
+    ComPtr<ID3D11DepthStencilState> noDepth_;
+};
+
+}  // namespace firmament
