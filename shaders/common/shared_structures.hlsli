@@ -30,10 +30,21 @@ struct FrameConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(FrameConstants);
 
-// postfx/display_encode.hlsl
-struct DisplayEncodeConstants {
-    float4 exposure;  // x: linear scale 2^EV applied before encoding; yzw: unused
+// postfx/log_luminance.hlsl and postfx/light_adaptation.hlsl
+struct SceneLuminanceConstants {
+    float4 source;      // xy: size of the HDR frame in pixels; zw: unused
+    float4 adaptation;  // x: weight of the measured value, 1 - exp(-dt / tau) (1: take it as
+                        // it is); yzw: unused
 };
-FIRMAMENT_CONSTANT_BUFFER(DisplayEncodeConstants);
+FIRMAMENT_CONSTANT_BUFFER(SceneLuminanceConstants);
+
+// postfx/tone_mapping.hlsl
+struct ToneMappingConstants {
+    uint4 mode;       // x: operator (ToneMapOperator's order); y: 1 = auto exposure from the adapted
+                      // log-average luminance, 0 = manual; zw: unused
+    float4 exposure;  // x: middle grey (key); y: 2^EV (the manual exposure, or the compensation on
+                      // top of auto exposure); z: white point Lw; w: luminance saturation
+};
+FIRMAMENT_CONSTANT_BUFFER(ToneMappingConstants);
 
 #endif

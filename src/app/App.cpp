@@ -72,7 +72,7 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
       profiler_(device_.device(), device_.context()),
       frameConstantBuffer_(device_.device()),
       orientationGrid_(device_.device()),
-      displayEncode_(device_.device()),
+      toneMapping_(device_.device()),
       flight_(std::move(flight)) {
     log::info("device: " + device_.describe());
     if (options_.recordFlight) ensureWritable(*options_.recordFlight);
@@ -291,10 +291,8 @@ void App::renderFrame(bool drawGui) {
         auto pass = profiler_.scope("Orientation grid");
         orientationGrid_.render(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), width_, height_);
     }
-    {
-        auto pass = profiler_.scope("Display encode");
-        displayEncode_.render(context, shaders_, state_.toneMapping, hdrFrame_.srv.Get(), outputTarget(), width_, height_);
-    }
+    toneMapping_.render(context, shaders_, profiler_, state_.toneMapping, hdrFrame_.srv.Get(), outputTarget(), width_, height_,
+                        timer_.deltaSeconds());
     std::vector<std::string> devices = hidDevices_.connectedNames();
     for (int i = 0; i < xinputPads_.connectedCount(); ++i) devices.push_back("Xbox pad (XInput)");
     GuiModel model{state_,
@@ -305,7 +303,8 @@ void App::renderFrame(bool drawGui) {
                    shaders_.sourceCompiler() ? shaders_.sourceCompiler()->name() : std::string(),
                    std::move(devices),
                    notice_,
-                   noticeIsError_};
+                   noticeIsError_,
+                   toneMapping_.latestReading(context, state_.toneMapping)};
     handleRequests(overlay_->build(model));
     if (drawGui) {
         auto pass = profiler_.scope("GUI");
@@ -324,6 +323,7 @@ void App::captureFrame() {
     d.settings = stateToJson(state_).dump(2);
     d.adapter = device_.describe();
     d.frame = static_cast<int>(timer_.frameCount());
+    d.techniques = toneMapping_.captureAttributes(device, context, state_.toneMapping);
     writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, hdrFrame_.texture.Get()), d);
     log::info("captured " + options_.capturePng().string() + " and " + options_.captureExr().string());

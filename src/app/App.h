@@ -16,7 +16,7 @@
 #include "input/HidDevices.h"
 #include "input/KeyboardMouse.h"
 #include "input/XInputPads.h"
-#include "postfx/DisplayEncodePass.h"
+#include "postfx/ToneMapping.h"
 #include "scene/OrientationGridPass.h"
 #include "ui/FrameTimeHistory.h"
 #include "ui/Overlay.h"
@@ -58,7 +58,7 @@ private:
     GpuProfiler profiler_;
     ConstantBuffer<gpu::FrameConstants> frameConstantBuffer_;
     OrientationGridPass orientationGrid_;
-    DisplayEncodePass displayEncode_;
+    ToneMapping toneMapping_;
     std::unique_ptr<Overlay> overlay_;
 
     KeyboardMouse keyboardMouse_;

@@ -9,7 +9,7 @@
 namespace firmament {
 
 ExrAttributes captureAttributes(const CaptureDescription& d, int width, int height) {
-    return {
+    ExrAttributes attributes{
         {"firmament.version", std::string(kFirmamentVersion)},
         {"firmament.resolution", glm::ivec2(width, height)},
         {"firmament.view", d.view},
@@ -19,6 +19,8 @@ ExrAttributes captureAttributes(const CaptureDescription& d, int width, int heig
         {"firmament.adapter", d.adapter},
         {"firmament.frame", d.frame},
     };
+    attributes.insert(d.techniques.begin(), d.techniques.end());
+    return attributes;
 }
 
 void writeCapture(const std::filesystem::path& pngPath, const std::filesystem::path& exrPath,

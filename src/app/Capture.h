@@ -1,7 +1,8 @@
 #pragma once
 // Captures of the final frame: the display image as PNG and the HDR frame as OpenEXR (half
 // float RGBA). The EXR header describes the frame: resolution, camera matrices, sun
-// direction, the settings as text, the adapter and the program version.
+// direction, the settings as JSON, the adapter, the program version, and what the techniques
+// record of themselves (the exposure and operator of the tone mapping).
 #include "core/Camera.h"
 #include "core/ExrImage.h"
 #include "gpu/Readback.h"
@@ -18,6 +19,7 @@ struct CaptureDescription {
     std::string settings;  // "name = value" lines
     std::string adapter;
     int frame = 0;
+    ExrAttributes techniques;  // what each technique records of itself ("firmament.toneMapping.*", ...)
 };
 
 ExrAttributes captureAttributes(const CaptureDescription& description, int width, int height);

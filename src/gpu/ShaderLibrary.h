@@ -6,7 +6,7 @@
 // Hot reload: with a source compiler (D3DCompile, vkd3d-compiler, fxc) the library recompiles
 // from the HLSL folder on request (F8) and when a source file or any file it includes
 // changes on disk. Shaders are reloaded per technique, the first folder of their file
-// ("postfx/display_encode.hlsl" belongs to "postfx"): all of a technique's permutations
+// ("postfx/tone_mapping.hlsl" belongs to "postfx"): all of a technique's permutations
 // are replaced together, or, if one fails to compile, none is, and the compiler's message
 // stays in errors() until a later reload of that technique succeeds.
 #include "core/FileWatcher.h"

@@ -1,18 +1,55 @@
 #pragma once
-// Settings of the step from HDR radiance to the display (section "toneMapping"). Today a
-// manual exposure before display encoding; the tone mapping operators, auto exposure and
-// light adaptation add their fields here.
+// Settings of the step from HDR radiance to the display (section "toneMapping"): exposure
+// (manual, or automatic from the frame's average luminance with light adaptation), and the
+// tone mapping operator with its controls. docs/tonemapping.md gives every formula.
 #include "core/Settings.h"
 
+#include <array>
 #include <cmath>
+#include <string_view>
 
 namespace firmament {
 
-struct ToneMappingSettings {
-    float exposureEv = 0.0f;  // exposure value: radiance is scaled by 2^EV
+// The order is the shader's operator index (shaders/postfx/tone_mapping_operators.hlsli).
+enum class ToneMapOperator { Exp, Reinhard, ReinhardModified, Uncharted2, FilmicAlu, Logarithmic, AdaptiveLogarithmic };
+inline constexpr std::array<std::string_view, 7> kToneMapOperatorNames{
+    "Exp", "Reinhard", "Reinhard mod", "Uncharted 2", "Filmic ALU", "Logarithmic", "Adaptive log"};
+inline constexpr int kToneMapOperatorCount = static_cast<int>(kToneMapOperatorNames.size());
 
-    float exposureScale() const { return std::exp2(exposureEv); }
-    void visit(SettingsVisitor& v) { v.field("exposure", exposureEv, {-10.0f, 10.0f}, "Exposure (EV)"); }
+// Which controls an operator reads (document 000, "Tone mapping controls").
+constexpr bool usesWhitePoint(ToneMapOperator op) {
+    return op == ToneMapOperator::ReinhardModified || op == ToneMapOperator::Uncharted2 ||
+           op == ToneMapOperator::Logarithmic || op == ToneMapOperator::AdaptiveLogarithmic;
+}
+// Operators that map luminance and carry the colour over with the saturation exponent; the
+// other two (Uncharted 2, Filmic ALU) map each colour channel on its own.
+constexpr bool usesLuminanceSaturation(ToneMapOperator op) {
+    return op != ToneMapOperator::Uncharted2 && op != ToneMapOperator::FilmicAlu;
+}
+
+struct ToneMappingSettings {
+    ToneMapOperator op = ToneMapOperator::Uncharted2;
+    float middleGray = 0.18f;           // the key: where auto exposure puts the average luminance
+    float whitePoint = 3.0f;            // scaled luminance that maps to display white
+    float luminanceSaturation = 1.0f;   // exponent on colour / luminance (1 keeps the hue and saturation)
+    bool autoExposure = true;           // exposure from the frame's log-average luminance
+    bool lightAdaptation = true;        // the measured average follows the scene over time
+    float adaptationSeconds = 0.5f;     // time constant of that adaptation
+    float exposureEv = 0.0f;            // manual exposure, or compensation on top of auto exposure
+
+    // 2^EV: the whole exposure without auto exposure, a factor on top of it with.
+    float exposureCompensation() const { return std::exp2(exposureEv); }
+
+    void visit(SettingsVisitor& v) {
+        v.choice("operator", op, kToneMapOperatorNames, "Tone mapping operator");
+        v.field("middleGray", middleGray, {0.01f, 1.0f}, "Middle gray (key)");
+        v.field("whitePoint", whitePoint, {0.01f, 10.0f}, "White point");
+        v.field("luminanceSaturation", luminanceSaturation, {0.01f, 2.0f}, "Luminance saturation");
+        v.field("autoExposure", autoExposure, "Auto exposure");
+        v.field("lightAdaptation", lightAdaptation, "Light adaptation");
+        v.field("adaptationSeconds", adaptationSeconds, {0.02f, 10.0f, true}, "Adaptation time (s)");
+        v.field("exposure", exposureEv, {-10.0f, 10.0f}, "Exposure (EV)");
+    }
 };
 
 }  // namespace firmament

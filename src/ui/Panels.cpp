@@ -6,7 +6,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace firmament {
 
@@ -50,10 +52,30 @@ void additionalPanel(GuiModel& m, const std::vector<SettingsSection>& sections, 
     requests.loadState = ImGui::Button("Load (F9)");
 }
 
-void toneMappingPanel(GuiModel&, const std::vector<SettingsSection>& sections) {
-    editSection(section(sections, "toneMapping"));
-    ImGui::TextWrapped("Radiance is scaled by 2^EV, clamped and sRGB encoded. Tone mapping "
-                       "operators, auto exposure and light adaptation arrive with the HDR pipeline.");
+// What the selected operator reads of the controls, in one line.
+std::string operatorControls(ToneMapOperator op) {
+    std::string uses = "Uses the middle gray";
+    if (usesWhitePoint(op)) uses += ", the white point";
+    if (usesLuminanceSaturation(op)) uses += ", the luminance saturation";
+    uses += usesLuminanceSaturation(op) ? "; maps luminance." : "; maps each channel.";
+    if (op == ToneMapOperator::FilmicAlu) uses += " Its curve includes the display gamma.";
+    return uses;
+}
+
+void toneMappingPanel(GuiModel& m, const std::vector<SettingsSection>& sections) {
+    const ToneMappingSettings& t = m.state.toneMapping;
+    editSection(section(sections, "toneMapping"), {"operator", "middleGray", "whitePoint", "luminanceSaturation"});
+    ImGui::TextDisabled("%s", operatorControls(t.op).c_str());
+    ImGui::SeparatorText("Exposure");
+    editSection(section(sections, "toneMapping"), {"autoExposure", "lightAdaptation", "adaptationSeconds", "exposure"});
+    if (!t.autoExposure) {
+        ImGui::TextWrapped("Manual: radiance x %.4g (2^EV). The middle gray applies with auto exposure.", m.exposure.exposure);
+    } else if (m.exposure.measured) {
+        ImGui::Text("Adapted average luminance %.4g", m.exposure.averageLuminance);
+        ImGui::Text("Exposure x %.4g (%+.2f EV)", m.exposure.exposure, std::log2(m.exposure.exposure));
+    } else {
+        ImGui::TextDisabled("Measuring the average luminance...");
+    }
 }
 
 void performancePanel(GuiModel& m) {

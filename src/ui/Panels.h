@@ -4,6 +4,7 @@
 // the program to do (full screen, reload, save, load) comes back as GuiRequests.
 #include "app/State.h"
 #include "gpu/GpuProfiler.h"
+#include "postfx/ExposureReading.h"
 #include "ui/FrameTimeHistory.h"
 
 #include <map>
@@ -30,6 +31,7 @@ struct GuiModel {
     std::vector<std::string> devices;  // connected HID devices and pads
     std::string notice;                // the last save / load / reload message
     bool noticeIsError = false;
+    ExposureReading exposure;          // what the tone mapping applied, a few frames ago
 };
 
 struct GuiRequests {

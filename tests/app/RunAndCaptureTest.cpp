@@ -2,6 +2,7 @@
 // something (not a uniform image), an EXR whose pixels and header describe the frame.
 #include "core/ExrImage.h"
 #include "core/PngImage.h"
+#include "postfx/ToneMappingCurves.h"
 #include "support/Process.h"
 #include "support/TestPaths.h"
 
@@ -40,7 +41,9 @@ Imath::half halfAt(const ExrFile& file, int x, int y, int channel) {
 }
 
 // With the orientation grid off nothing draws yet: the HDR frame holds the background
-// radiance everywhere, and the PNG, without the GUI (left out by default), is uniform.
+// radiance everywhere, and the PNG, without the GUI (left out by default), is uniform. Its
+// colour is the background tone mapped with the default settings (Uncharted 2, auto
+// exposure: the background's own luminance is the average), as the CPU reference predicts.
 TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-headless-test";
     std::filesystem::remove_all(folder);
@@ -51,7 +54,8 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
                                     L"--set", L"scene.orientationGrid=off", L"--set", L"camera.fieldOfView=60"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("GPU time per pass over 4 frames at 320x200"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("Display encode"), std::string::npos) << run.output;
+    for (const char* pass : {"Scene luminance", "Light adaptation", "Tone mapping"})
+        EXPECT_NE(run.output.find(pass), std::string::npos) << pass << "\n" << run.output;
 
     const Rgba8Image image = readPng(png);
     ASSERT_EQ(image.width, 320);
@@ -67,12 +71,23 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     EXPECT_NEAR(static_cast<float>(halfAt(file, 319, 199, 0)), 0.02f, 1e-4f);
     EXPECT_NEAR(static_cast<float>(halfAt(file, 319, 199, 2)), 0.035f, 1e-4f);
 
+    const glm::dvec3 background(halfAt(file, 0, 0, 0), halfAt(file, 0, 0, 1), halfAt(file, 0, 0, 2));
+    const double averageLuminance = tonemap::kLogLuminanceDelta + tonemap::relativeLuminance(background);
+    const double exposure = tonemap::autoExposure(averageLuminance, 0.18, 1.0);
+    const glm::dvec3 display = tonemap::toDisplay(background, {ToneMapOperator::Uncharted2, exposure, 3.0, 1.0});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(image.pixels[c], 255.0 * display[c], 1.0) << "channel " << c;
+
     const auto& a = file.attributes;
     for (const char* name : {"firmament.version", "firmament.resolution", "firmament.view", "firmament.projection",
                              "firmament.directionToSun", "firmament.settings", "firmament.adapter", "firmament.frame"})
         EXPECT_TRUE(a.count(name)) << "missing header attribute " << name;
     EXPECT_EQ(std::get<glm::ivec2>(a.at("firmament.resolution")), glm::ivec2(320, 200));
     EXPECT_EQ(std::get<int>(a.at("firmament.frame")), 4);
+    // The tone mapping records what it applied.
+    EXPECT_EQ(std::get<std::string>(a.at("firmament.toneMapping.operator")), "Uncharted 2");
+    EXPECT_NEAR(std::get<float>(a.at("firmament.toneMapping.exposure")), exposure, 1e-3 * exposure);
+    EXPECT_NEAR(std::get<float>(a.at("firmament.toneMapping.averageLuminance")), averageLuminance, 1e-3 * averageLuminance);
+    EXPECT_EQ(std::get<int>(a.at("firmament.toneMapping.autoExposure")), 1);
     // The settings are the whole state as JSON, loadable again with --settings.
     const auto settings = nlohmann::json::parse(std::get<std::string>(a.at("firmament.settings")));
     EXPECT_EQ(settings["camera"]["fieldOfView"], 60.0);
@@ -108,6 +123,32 @@ TEST(HeadlessRun, DrawsTheOrientationGridFromASettingsFile) {
     EXPECT_GT(red, groundOrLine * 0.9f);
     EXPECT_LT(red, 0.60f * (3.0f * std::sin(glm::radians(45.0f)) + 0.15f));
     expectNotUniform(readPng(folder / "grid.png"));
+    std::filesystem::remove_all(folder);
+}
+
+// Each tone mapping operator, chosen with --set, draws the same scene differently and is
+// named in the capture's header; a manual exposure is recorded as 2^EV.
+TEST(HeadlessRun, EveryToneMappingOperatorIsSelectableAndRecorded) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-operators-test";
+    std::filesystem::remove_all(folder);
+    std::vector<std::vector<std::uint8_t>> images;
+    for (const std::string_view name : kToneMapOperatorNames) {
+        const std::wstring wide(name.begin(), name.end());
+        const auto png = folder / (L"op" + std::to_wstring(images.size()) + L".png");
+        const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--frames", L"2", L"--resolution", L"128x96", L"--set",
+                                                              L"toneMapping.operator=" + wide, L"--set", L"camera.pitch=-5",
+                                                              L"--set", L"toneMapping.autoExposure=off", L"--set",
+                                                              L"toneMapping.exposure=-1.5", L"--capture", png.wstring()});
+        ASSERT_EQ(run.exitCode, 0u) << run.output;
+        const ExrFile file = readExr(std::filesystem::path(png).replace_extension(".exr"));
+        EXPECT_EQ(std::get<std::string>(file.attributes.at("firmament.toneMapping.operator")), name);
+        EXPECT_NEAR(std::get<float>(file.attributes.at("firmament.toneMapping.exposure")), std::exp2(-1.5f), 1e-6f);
+        EXPECT_FALSE(file.attributes.count("firmament.toneMapping.averageLuminance")) << "no measurement without auto exposure";
+        images.push_back(readPng(png).pixels);
+    }
+    for (size_t a = 0; a < images.size(); ++a)
+        for (size_t b = a + 1; b < images.size(); ++b)
+            EXPECT_NE(images[a], images[b]) << kToneMapOperatorNames[a] << " and " << kToneMapOperatorNames[b] << " look the same";
     std::filesystem::remove_all(folder);
 }
 

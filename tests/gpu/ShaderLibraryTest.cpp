@@ -40,7 +40,7 @@ TEST_F(WarpDevice, EveryPermutationInTheProgramsManifestCreatesAShader) {
     // The manifest names the HLSL folder it was compiled from, which hot reload uses.
     const auto source = PrecompiledShaders(productShaders()).sourceRoot();
     ASSERT_TRUE(source.has_value());
-    EXPECT_TRUE(std::filesystem::exists(*source / "postfx" / "display_encode.hlsl")) << source->string();
+    EXPECT_TRUE(std::filesystem::exists(*source / "postfx" / "tone_mapping.hlsl")) << source->string();
 }
 
 TEST_F(WarpDevice, MissingPermutationNamesItsKey) {

@@ -36,6 +36,13 @@ State changedState() {
     s.flight.scaleWithAltitude = false;
     s.devices.stickDeadZone = 0.3f;
     s.toneMapping.exposureEv = -1.25f;
+    s.toneMapping.op = ToneMapOperator::AdaptiveLogarithmic;
+    s.toneMapping.middleGray = 0.3f;
+    s.toneMapping.whitePoint = 7.5f;
+    s.toneMapping.luminanceSaturation = 0.7f;
+    s.toneMapping.autoExposure = false;
+    s.toneMapping.lightAdaptation = false;
+    s.toneMapping.adaptationSeconds = 2.0f;
     s.shaders.autoReload = false;
     s.ui.panel = Panel::ToneMapping;
     s.ui.help = true;
@@ -53,6 +60,8 @@ TEST(Settings, JsonRoundTripRestoresEveryField) {
     EXPECT_EQ(loaded.flight.speed, original.flight.speed);  // bit-exact
     EXPECT_EQ(loaded.camera.position, original.camera.position);
     EXPECT_EQ(loaded.ui.panel, Panel::ToneMapping);
+    EXPECT_EQ(loaded.toneMapping.op, ToneMapOperator::AdaptiveLogarithmic);
+    EXPECT_EQ(loaded.toneMapping.adaptationSeconds, 2.0f);
     ASSERT_TRUE(loaded.bookmarks[2].has_value());
     EXPECT_EQ(loaded.bookmarks[2]->camera.position.x, 1.0e5f);
     EXPECT_FALSE(loaded.bookmarks[0].has_value());
@@ -100,13 +109,14 @@ TEST(Settings, BadJsonNamesTheKeyAndChangesNothing) {
 TEST(Settings, SetAssignsEveryKindOfField) {
     State state;
     applyAssignments(state, {"display.vsync=off", "camera.fieldOfView=60", "camera.position=1,2.5,-3", "ui.panel=tone mapping",
-                             "flight.speed=1e3", "sun.azimuth=-90"});
+                             "flight.speed=1e3", "sun.azimuth=-90", "toneMapping.operator=filmic alu"});
     EXPECT_FALSE(state.display.vsync);
     EXPECT_EQ(state.camera.verticalFovDegrees, 60.0f);
     EXPECT_EQ(state.camera.position, glm::vec3(1.0f, 2.5f, -3.0f));
     EXPECT_EQ(state.ui.panel, Panel::ToneMapping);
     EXPECT_EQ(state.flight.speed, 1000.0f);
     EXPECT_EQ(state.sun.azimuthDegrees, -90.0f);
+    EXPECT_EQ(state.toneMapping.op, ToneMapOperator::FilmicAlu);  // a choice's name in any case
 }
 
 TEST(Settings, BadSetNamesTheKeyAndChangesNothing) {
