@@ -25,7 +25,10 @@ protected:
         WarpDevice::SetUp();
         const auto sourceRoot = PrecompiledShaders(testShaders()).sourceRoot();
         ASSERT_TRUE(sourceRoot.has_value()) << "the test manifest names no #source folder";
-        root = std::filesystem::temp_directory_path() / "firmament-hot-reload-test";
+        // One folder per test: CTest runs tests in parallel processes, and a shared folder
+        // would be wiped and re-copied under a test that is still running.
+        root = std::filesystem::temp_directory_path() /
+               ("firmament-hot-reload-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         std::filesystem::remove_all(root);
         std::filesystem::create_directories(root / "reload");
         std::filesystem::copy(*sourceRoot / "reload", root / "reload", std::filesystem::copy_options::recursive);
