@@ -30,6 +30,26 @@ struct FrameConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(FrameConstants);
 
+// atmosphere/*: the physical model (src/atmosphere/AtmosphereParameters.h), lengths in metres.
+struct AtmosphereConstants {
+    float4 earth;               // x: Earth radius; y: atmosphere height; z: radius of its top; w: unused
+    float4 scaleHeights;        // x: Rayleigh; y: Mie; zw: unused
+    float4 rayleighScattering;  // rgb: beta_R at sea level (1/m), also its extinction; w: unused
+    float4 mieScattering;       // rgb: beta_M at sea level (1/m); w: Mie asymmetry g
+    float4 mieExtinction;       // rgb: Mie extinction at sea level (1/m); w: unused
+    float4 ozone;               // rgb: ozone absorption at the layer's peak (1/m), zero when off; w: unused
+    float4 ozoneLayer;          // x: altitude of the peak; y: half width of the tent; zw: unused
+    float4 scatteringLutSize;   // the 4D scattering LUT: altitude, view zenith, sun zenith, sun-view
+    float4 netDensityLutSize;   // xy: the net density LUT: altitude, zenith; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(AtmosphereConstants);
+
+// atmosphere/precompute_*.hlsl: the part of a table one dispatch fills.
+struct PrecomputeSliceConstants {
+    uint4 range;  // x: first z slice; y: one past the last; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(PrecomputeSliceConstants);
+
 // postfx/log_luminance.hlsl and postfx/light_adaptation.hlsl
 struct SceneLuminanceConstants {
     float4 source;      // xy: size of the HDR frame in pixels; zw: unused

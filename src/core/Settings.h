@@ -29,6 +29,9 @@ public:
     virtual void field(std::string_view key, float& value, Range<float> range, std::string_view label) = 0;
     // Any finite vector (a position, a direction).
     virtual void field(std::string_view key, glm::vec3& value, std::string_view label) = 0;
+    // A linear RGB colour, each component in [0, 1]: saved and set like a vector, edited with a
+    // colour picker.
+    virtual void colour(std::string_view key, glm::vec3& value, std::string_view label) { field(key, value, label); }
     // One of `names`, stored as its index.
     virtual void choiceIndex(std::string_view key, int& index, std::span<const std::string_view> names,
                              std::string_view label) = 0;

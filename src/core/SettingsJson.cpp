@@ -45,6 +45,10 @@ std::string joinNames(std::span<const std::string_view> names) {
     return out;
 }
 
+bool isColour(const glm::vec3& c) {
+    return c.x >= 0.0f && c.x <= 1.0f && c.y >= 0.0f && c.y <= 1.0f && c.z >= 0.0f && c.z <= 1.0f;
+}
+
 std::string outOfRange(const std::string& key, double value, double min, double max) {
     return key + ": " + formatNumber(value) + " is outside " + formatNumber(min) + " to " + formatNumber(max);
 }
@@ -103,6 +107,10 @@ public:
             if (!std::isfinite(read.x) || !std::isfinite(read.y) || !std::isfinite(read.z)) fail(key, "is not finite");
             value = read;
         }
+    }
+    void colour(std::string_view key, glm::vec3& value, std::string_view label) override {
+        field(key, value, label);
+        if (!isColour(value)) fail(key, "colour components must be within 0 to 1");
     }
     void choiceIndex(std::string_view key, int& index, std::span<const std::string_view> names, std::string_view) override {
         if (const json* v = find(key)) {
@@ -172,6 +180,10 @@ public:
         parts.push_back(text_.substr(start));
         if (parts.size() != 3) fail("expected x,y,z, got '" + std::string(text_) + "'");
         value = glm::vec3(parseFloat(parts[0]), parseFloat(parts[1]), parseFloat(parts[2]));
+    }
+    void colour(std::string_view key, glm::vec3& value, std::string_view label) override {
+        field(key, value, label);
+        if (match(key) && !isColour(value)) fail("colour components must be within 0 to 1");
     }
     void choiceIndex(std::string_view key, int& index, std::span<const std::string_view> names, std::string_view) override {
         if (!match(key)) return;

@@ -56,6 +56,36 @@ ReadbackImage readTexture2D(ID3D11Device* device, ID3D11DeviceContext* context, 
     return image;
 }
 
+ReadbackVolume readTexture3D(ID3D11Device* device, ID3D11DeviceContext* context, ID3D11Texture3D* texture) {
+    D3D11_TEXTURE3D_DESC desc{};
+    texture->GetDesc(&desc);
+    ReadbackVolume volume;
+    volume.width = static_cast<int>(desc.Width);
+    volume.height = static_cast<int>(desc.Height);
+    volume.depth = static_cast<int>(desc.Depth);
+    volume.bytesPerPixel = bytesPerPixel(desc.Format);
+
+    desc.MipLevels = 1;
+    desc.Usage = D3D11_USAGE_STAGING;
+    desc.BindFlags = 0;
+    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+    desc.MiscFlags = 0;
+    ComPtr<ID3D11Texture3D> staging;
+    check(device->CreateTexture3D(&desc, nullptr, &staging), "CreateTexture3D (staging)");
+    context->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, texture, 0, nullptr);
+
+    D3D11_MAPPED_SUBRESOURCE mapped{};
+    check(context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), "Map (volume read-back)");
+    const size_t rowBytes = static_cast<size_t>(volume.width) * volume.bytesPerPixel;
+    volume.bytes.resize(rowBytes * volume.height * volume.depth);
+    for (int z = 0; z < volume.depth; ++z)
+        for (int y = 0; y < volume.height; ++y)
+            std::memcpy(volume.bytes.data() + (static_cast<size_t>(z) * volume.height + y) * rowBytes,
+                        static_cast<const std::uint8_t*>(mapped.pData) + z * mapped.DepthPitch + y * mapped.RowPitch, rowBytes);
+    context->Unmap(staging.Get(), 0);
+    return volume;
+}
+
 std::vector<std::uint8_t> readBuffer(ID3D11Device* device, ID3D11DeviceContext* context, ID3D11Buffer* buffer) {
     D3D11_BUFFER_DESC desc{};
     buffer->GetDesc(&desc);

@@ -36,6 +36,27 @@ Texture2D createColorTexture(ID3D11Device* device, int width, int height, DXGI_F
     return t;
 }
 
+Texture3D createTexture3D(ID3D11Device* device, int width, int height, int depth, DXGI_FORMAT format, UINT bindFlags) {
+    Texture3D t;
+    t.width = width;
+    t.height = height;
+    t.depth = depth;
+    D3D11_TEXTURE3D_DESC desc{};
+    desc.Width = static_cast<UINT>(width);
+    desc.Height = static_cast<UINT>(height);
+    desc.Depth = static_cast<UINT>(depth);
+    desc.MipLevels = 1;
+    desc.Format = format;
+    desc.Usage = D3D11_USAGE_DEFAULT;
+    desc.BindFlags = bindFlags;
+    check(device->CreateTexture3D(&desc, nullptr, &t.texture), "CreateTexture3D");
+    if (bindFlags & D3D11_BIND_SHADER_RESOURCE)
+        check(device->CreateShaderResourceView(t.texture.Get(), nullptr, &t.srv), "CreateShaderResourceView (3D)");
+    if (bindFlags & D3D11_BIND_UNORDERED_ACCESS)
+        check(device->CreateUnorderedAccessView(t.texture.Get(), nullptr, &t.uav), "CreateUnorderedAccessView (3D)");
+    return t;
+}
+
 Texture2D createDepthTexture(ID3D11Device* device, int width, int height) {
     Texture2D t = createTexture(device, width, height, DXGI_FORMAT_R32_TYPELESS,
                                 D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE, "CreateTexture2D (depth)");

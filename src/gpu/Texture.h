@@ -25,4 +25,17 @@ Texture2D createColorTexture(ID3D11Device* device, int width, int height, DXGI_F
 // Depth buffer: 32-bit float depth, readable from shaders.
 Texture2D createDepthTexture(ID3D11Device* device, int width, int height);
 
+// A 3D texture (look-up tables) with the views its bind flags ask for (SHADER_RESOURCE,
+// UNORDERED_ACCESS).
+struct Texture3D {
+    ComPtr<ID3D11Texture3D> texture;
+    ComPtr<ID3D11ShaderResourceView> srv;
+    ComPtr<ID3D11UnorderedAccessView> uav;
+    int width = 0;
+    int height = 0;
+    int depth = 0;
+};
+
+Texture3D createTexture3D(ID3D11Device* device, int width, int height, int depth, DXGI_FORMAT format, UINT bindFlags);
+
 }  // namespace firmament

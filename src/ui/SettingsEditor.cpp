@@ -27,6 +27,9 @@ public:
     void field(std::string_view k, glm::vec3& v, std::string_view l) override {
         if (wanted(k)) editor_.field(k, v, l);
     }
+    void colour(std::string_view k, glm::vec3& v, std::string_view l) override {
+        if (wanted(k)) editor_.colour(k, v, l);
+    }
     void choiceIndex(std::string_view k, int& i, std::span<const std::string_view> n, std::string_view l) override {
         if (wanted(k)) editor_.choiceIndex(k, i, n, l);
     }
@@ -56,6 +59,10 @@ void SettingsEditor::field(std::string_view, float& value, Range<float> range, s
 
 void SettingsEditor::field(std::string_view, glm::vec3& value, std::string_view label) {
     changed_ |= ImGui::DragFloat3(text(label).c_str(), &value.x, 10.0f, 0.0f, 0.0f, "%.1f");
+}
+
+void SettingsEditor::colour(std::string_view, glm::vec3& value, std::string_view label) {
+    changed_ |= ImGui::ColorEdit3(text(label).c_str(), &value.x, ImGuiColorEditFlags_Float);
 }
 
 void SettingsEditor::choiceIndex(std::string_view, int& index, std::span<const std::string_view> names, std::string_view label) {

@@ -12,6 +12,7 @@ public:
     void field(std::string_view key, int& value, Range<int> range, std::string_view label) override;
     void field(std::string_view key, float& value, Range<float> range, std::string_view label) override;
     void field(std::string_view key, glm::vec3& value, std::string_view label) override;
+    void colour(std::string_view key, glm::vec3& value, std::string_view label) override;
     void choiceIndex(std::string_view key, int& index, std::span<const std::string_view> names, std::string_view label) override;
 
     bool changed() const { return changed_; }

@@ -1,0 +1,42 @@
+#pragma once
+// Settings of the atmosphere (section "atmosphere"): the physical parameters a person changes
+// (document 000's Additional panel: aerosol density and absorption, custom scattering colours)
+// and the pre-computation's resolution. Changing any of them recomputes the look-up tables.
+#include "core/Settings.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <string_view>
+
+namespace firmament {
+
+enum class LutResolution { Small, Medium, Full };
+inline constexpr std::array<std::string_view, 3> kLutResolutionNames{"Small (8x32x16x8)", "Medium (16x64x32x8)",
+                                                                     "Full (32x128x64x16)"};
+
+struct AtmosphereSettings {
+    float aerosolDensity = 1.0f;     // scales the Mie scattering coefficient
+    float aerosolAbsorption = 0.1f;  // Mie extinction = scattering * (1 + this)
+    float mieAsymmetry = 0.76f;      // g of the Cornette-Shanks phase function
+    bool customCoefficients = false;
+    // Custom scattering colours: beta_R = colour * kRayleighColourScale, beta_M = colour *
+    // kMieColourScale * aerosol density. The defaults give back the physical coefficients.
+    glm::vec3 rayleighColour{0.145015f, 0.337539f, 0.827619f};
+    glm::vec3 mieColour{1.0f, 1.0f, 1.0f};
+    bool ozone = false;              // an absorbing ozone layer (Bruneton 2017), beyond document 000
+    LutResolution resolution = LutResolution::Full;
+
+    void visit(SettingsVisitor& v) {
+        v.field("aerosolDensity", aerosolDensity, {0.1f, 5.0f}, "Aerosol density");
+        v.field("aerosolAbsorption", aerosolAbsorption, {0.0f, 5.0f}, "Aerosol absorption");
+        v.field("mieAsymmetry", mieAsymmetry, {0.0f, 0.95f}, "Mie asymmetry g");
+        v.field("customCoefficients", customCoefficients, "Use custom scattering coefficients");
+        v.colour("rayleighColour", rayleighColour, "Rayleigh colour");
+        v.colour("mieColour", mieColour, "Mie colour");
+        v.field("ozone", ozone, "Ozone layer");
+        v.choice("lutResolution", resolution, kLutResolutionNames, "LUT resolution");
+    }
+};
+
+}  // namespace firmament

@@ -1,0 +1,164 @@
+#include "atmosphere/ReferenceAtmosphere.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace firmament::atmosphere {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Nodes and weights of 8-point Gauss-Legendre quadrature on [-1, 1] (positive half).
+constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+constexpr std::array<double, 4> kWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
+constexpr int kDensitySegments = 32;   // per net-density integral
+constexpr int kScatteringSegments = 48;  // per lit interval of the view ray
+
+// Distances (near, far) along start + t dir to a sphere about the origin; nullopt-like: far < near.
+glm::dvec2 raySphere(glm::dvec3 start, glm::dvec3 dir, double radius) {
+    const double b = glm::dot(start, dir);
+    const double c = glm::dot(start, start) - radius * radius;
+    const double discriminant = b * b - c;
+    if (discriminant < 0.0) return {1.0, -1.0};
+    const double root = std::sqrt(discriminant);
+    return {-b - root, -b + root};
+}
+
+}  // namespace
+
+double gaussLegendre(const std::function<double(double)>& f, double a, double b, int segments) {
+    return gaussLegendre3([&](double s) { return glm::dvec3(f(s)); }, a, b, segments).x;
+}
+
+glm::dvec3 gaussLegendre3(const std::function<glm::dvec3(double)>& f, double a, double b, int segments) {
+    glm::dvec3 sum(0.0);
+    const double width = (b - a) / segments;
+    for (int i = 0; i < segments; ++i) {
+        const double centre = a + (i + 0.5) * width, half = 0.5 * width;
+        for (size_t k = 0; k < kNodes.size(); ++k)
+            sum += kWeights[k] * half * (f(centre - half * kNodes[k]) + f(centre + half * kNodes[k]));
+    }
+    return sum;
+}
+
+double rayleighPhase(double mu) { return 3.0 / (16.0 * kPi) * (1.0 + mu * mu); }
+
+double miePhase(double mu, double g) {
+    const double g2 = g * g;
+    return 3.0 / (8.0 * kPi) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * std::pow(1.0 + g2 - 2.0 * g * mu, 1.5));
+}
+
+glm::dvec3 ReferenceAtmosphere::density(double h) const {
+    const double ozone = std::max(0.0, 1.0 - std::abs(h - p_.ozoneCentre) / p_.ozoneHalfWidth);
+    return {std::exp(-h / p_.rayleighScaleHeight), std::exp(-h / p_.mieScaleHeight), ozone};
+}
+
+glm::dvec3 ReferenceAtmosphere::netDensity(glm::dvec3 from, glm::dvec3 to) const {
+    const double length = glm::length(to - from);
+    if (length <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 dir = (to - from) / length;
+    return gaussLegendre3([&](double s) { return density(glm::length(from + dir * s) - p_.earthRadius); }, 0.0, length,
+                          kDensitySegments);
+}
+
+glm::dvec3 ReferenceAtmosphere::netDensityToTop(double h, double cosZenith) const {
+    const glm::dvec3 start(0.0, p_.earthRadius + h, 0.0);
+    const glm::dvec3 dir(std::sqrt(std::max(0.0, 1.0 - cosZenith * cosZenith)), cosZenith, 0.0);
+    const double toTop = std::max(raySphere(start, dir, p_.topRadius()).y, 0.0);
+    return netDensity(start, start + dir * toTop);
+}
+
+glm::dvec3 ReferenceAtmosphere::opticalDepth(glm::dvec3 net) const {
+    return p_.rayleighScattering * net.x + p_.mieExtinction * net.y + p_.ozoneAbsorption * net.z;
+}
+
+bool ReferenceAtmosphere::inEarthShadow(glm::dvec3 position, glm::dvec3 sunDir) const { return hitsGround(position, sunDir); }
+
+glm::dvec3 ReferenceAtmosphere::sunTransmittance(glm::dvec3 position, glm::dvec3 sunDir) const {
+    if (inEarthShadow(position, sunDir)) return glm::dvec3(0.0);
+    const double toTop = std::max(raySphere(position, sunDir, p_.topRadius()).y, 0.0);
+    return glm::exp(-opticalDepth(netDensity(position, position + sunDir * toTop)));
+}
+
+bool ReferenceAtmosphere::hitsGround(glm::dvec3 start, glm::dvec3 dir) const {
+    const double radius = glm::length(start);
+    return glm::dot(start / radius, dir) < cosHorizon(p_, radius - p_.earthRadius);
+}
+
+double ReferenceAtmosphere::rayLength(glm::dvec3 start, glm::dvec3 dir) const { return rayLength(start, dir, hitsGround(start, dir)); }
+
+double ReferenceAtmosphere::rayLength(glm::dvec3 start, glm::dvec3 dir, bool ground) const {
+    if (ground) {
+        const double b = glm::dot(start, dir), c = glm::dot(start, start) - p_.earthRadius * p_.earthRadius;
+        return std::max(-b - std::sqrt(std::max(b * b - c, 0.0)), 0.0);
+    }
+    return std::max(raySphere(start, dir, p_.topRadius()).y, 0.0);
+}
+
+glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir) const {
+    return singleScattering(start, viewDir, sunDir, hitsGround(start, viewDir));
+}
+
+glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool ground) const {
+    const double length = rayLength(start, viewDir, ground);
+    // Where the ray crosses the boundary of the Earth's shadow: the cylinder of radius R
+    // behind the Earth (|q - (q.l) l| = R with q.l < 0) and the plane q.l = 0 closing it.
+    std::vector<double> cuts{0.0, length};
+    const glm::dvec3 qPerp = start - glm::dot(start, sunDir) * sunDir;
+    const glm::dvec3 vPerp = viewDir - glm::dot(viewDir, sunDir) * sunDir;
+    const double a = glm::dot(vPerp, vPerp), b = 2.0 * glm::dot(qPerp, vPerp), c = glm::dot(qPerp, qPerp) - p_.earthRadius * p_.earthRadius;
+    if (a > 0.0 && b * b - 4.0 * a * c > 0.0) {
+        const double root = std::sqrt(b * b - 4.0 * a * c);
+        cuts.push_back((-b - root) / (2.0 * a));
+        cuts.push_back((-b + root) / (2.0 * a));
+    }
+    if (std::abs(glm::dot(viewDir, sunDir)) > 0.0) cuts.push_back(-glm::dot(start, sunDir) / glm::dot(viewDir, sunDir));
+    std::erase_if(cuts, [&](double s) { return !(s >= 0.0 && s <= length); });
+    std::sort(cuts.begin(), cuts.end());
+
+    const double cosTheta = glm::dot(viewDir, sunDir);
+    const double rayleigh = rayleighPhase(cosTheta), mie = miePhase(cosTheta, p_.mieAsymmetry);
+    glm::dvec3 total(0.0);
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const double s0 = cuts[i], s1 = cuts[i + 1];
+        if (s1 - s0 <= 0.0 || inEarthShadow(start + viewDir * (0.5 * (s0 + s1)), sunDir)) continue;
+        total += gaussLegendre3(
+            [&](double s) {
+                const glm::dvec3 point = start + viewDir * s;
+                const glm::dvec3 rho = density(glm::length(point) - p_.earthRadius);
+                const glm::dvec3 toCamera = glm::exp(-opticalDepth(netDensity(start, point)));
+                const glm::dvec3 scattering = p_.rayleighScattering * rho.x * rayleigh + p_.mieScattering * rho.y * mie;
+                return scattering * toCamera * sunTransmittance(point, sunDir);
+            },
+            s0, s1, kScatteringSegments);
+    }
+    return total;
+}
+
+ReferenceAtmosphere::Ray ReferenceAtmosphere::ray(const ScatteringCoordinates& c) const {
+    Ray r;
+    r.start = glm::dvec3(0.0, p_.earthRadius + c.altitude, 0.0);
+    const double sinView = std::sqrt(std::max(0.0, 1.0 - c.cosView * c.cosView));
+    r.viewDir = glm::dvec3(sinView, c.cosView, 0.0);
+    const double cosSunView = clampSunView(c.cosView, c.cosSun, c.cosSunView);
+    const double sunX = sinView > 1e-9 ? (cosSunView - c.cosView * c.cosSun) / sinView : 0.0;
+    r.sunDir = glm::dvec3(sunX, c.cosSun, std::sqrt(std::max(0.0, 1.0 - sunX * sunX - c.cosSun * c.cosSun)));
+    r.sunDir = glm::normalize(r.sunDir);
+    return r;
+}
+
+glm::dvec3 ReferenceAtmosphere::singleScattering(const ScatteringCoordinates& c) const {
+    const Ray r = ray(c);
+    return singleScattering(r.start, r.viewDir, r.sunDir);
+}
+
+glm::dvec3 ReferenceAtmosphere::singleScattering(const ScatteringCoordinates& c, bool aboveHorizon) const {
+    const Ray r = ray(c);
+    return singleScattering(r.start, r.viewDir, r.sunDir, !aboveHorizon);
+}
+
+}  // namespace firmament::atmosphere

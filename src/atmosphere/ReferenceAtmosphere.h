@@ -1,0 +1,66 @@
+#pragma once
+// The atmosphere on the CPU in double precision, computed directly, with no table: the
+// reference the GPU's tables are tested against. Integrals use composite 8-point
+// Gauss-Legendre quadrature, and the view ray is split where it enters or leaves the Earth's
+// shadow, so that no quadrature segment straddles a discontinuity. Positions are relative to
+// the Earth's centre, in metres; radiance is per unit sun irradiance.
+#include "atmosphere/AtmosphereParameters.h"
+#include "atmosphere/ScatteringParameterization.h"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+
+namespace firmament::atmosphere {
+
+class ReferenceAtmosphere {
+public:
+    explicit ReferenceAtmosphere(const AtmosphereParameters& parameters) : p_(parameters) {}
+
+    // Relative densities at altitude h: Rayleigh, Mie, ozone.
+    glm::dvec3 density(double altitude) const;
+    // Density integrated along the segment between two points.
+    glm::dvec3 netDensity(glm::dvec3 from, glm::dvec3 to) const;
+    // Along a ray from altitude h with the given zenith cosine to the top of the atmosphere,
+    // as if the ground were not there.
+    glm::dvec3 netDensityToTop(double altitude, double cosZenith) const;
+    glm::dvec3 opticalDepth(glm::dvec3 netDensity) const;
+    // exp(-optical depth) to the top towards the sun; zero where the Earth hides it.
+    glm::dvec3 sunTransmittance(glm::dvec3 position, glm::dvec3 sunDir) const;
+    // Distance along the ray to the top of the atmosphere, or to the ground when it meets it:
+    // when it points below the horizon (cos view < c_h), or, for the ray exactly along the
+    // horizon, when `hitsGround` says so (the lower half of the table's view zenith axis).
+    double rayLength(glm::dvec3 start, glm::dvec3 dir) const;
+    double rayLength(glm::dvec3 start, glm::dvec3 dir, bool hitsGround) const;
+    bool hitsGround(glm::dvec3 start, glm::dvec3 dir) const;
+    bool inEarthShadow(glm::dvec3 position, glm::dvec3 sunDir) const;
+
+    // Single scattering, document 000's L_in^(1): the integral along the view ray of
+    // T(C -> P) (beta_R rho_R P_R + beta_M rho_M P_M) T_sun(P) ds.
+    glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir) const;
+    glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround) const;
+    glm::dvec3 singleScattering(const ScatteringCoordinates& c) const;
+    glm::dvec3 singleScattering(const ScatteringCoordinates& c, bool aboveHorizon) const;
+
+    // A start point and two directions with the given table coordinates (in the x-y plane,
+    // the sun towards +z when it is off that plane).
+    struct Ray {
+        glm::dvec3 start, viewDir, sunDir;
+    };
+    Ray ray(const ScatteringCoordinates& c) const;
+
+    const AtmosphereParameters& parameters() const { return p_; }
+
+private:
+    AtmosphereParameters p_;
+};
+
+// Composite 8-point Gauss-Legendre quadrature of f over [a, b] in `segments` equal parts.
+double gaussLegendre(const std::function<double(double)>& f, double a, double b, int segments);
+glm::dvec3 gaussLegendre3(const std::function<glm::dvec3(double)>& f, double a, double b, int segments);
+
+// Phase functions, normalised over the sphere.
+double rayleighPhase(double cosTheta);            // 3 / (16 pi) (1 + mu^2)
+double miePhase(double cosTheta, double g);       // Cornette-Shanks
+
+}  // namespace firmament::atmosphere

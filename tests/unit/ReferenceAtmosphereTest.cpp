@@ -1,0 +1,93 @@
+// The CPU reference model against closed forms: vertical and horizontal optical depths, the
+// optically thin limit of single scattering, the Earth's shadow, the quadrature itself.
+#include "atmosphere/ReferenceAtmosphere.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace firmament::atmosphere {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(ReferenceAtmosphere, GaussLegendreIsExactForPolynomialsOfDegree15) {
+    EXPECT_NEAR(gaussLegendre([](double x) { return std::pow(x, 15); }, 0.0, 1.0, 1), 1.0 / 16.0, 1e-15);
+    EXPECT_NEAR(gaussLegendre([](double x) { return std::exp(-x); }, 0.0, 10.0, 8), 1.0 - std::exp(-10.0), 1e-12);
+}
+
+// Straight up, the path is radial: the net density is H (exp(-h / H) - exp(-H_atm / H)).
+TEST(ReferenceAtmosphere, VerticalNetDensityMatchesTheClosedForm) {
+    const AtmosphereParameters p;
+    const ReferenceAtmosphere reference(p);
+    for (const double h : {0.0, 1500.0, 12000.0, 60000.0}) {
+        const glm::dvec3 net = reference.netDensityToTop(h, 1.0);
+        const double rayleigh = p.rayleighScaleHeight * (std::exp(-h / p.rayleighScaleHeight) - std::exp(-p.atmosphereHeight / p.rayleighScaleHeight));
+        const double mie = p.mieScaleHeight * (std::exp(-h / p.mieScaleHeight) - std::exp(-p.atmosphereHeight / p.mieScaleHeight));
+        EXPECT_NEAR(net.x, rayleigh, 1e-9 * rayleigh) << h;
+        EXPECT_NEAR(net.y, mie, 1e-9 * mie) << h;
+    }
+}
+
+// Along the horizon from the ground, the net density is Chapman's grazing integral,
+// sqrt(pi R H / 2) to first order in H / R (a correction of about H / (8 R) follows).
+TEST(ReferenceAtmosphere, HorizontalNetDensityMatchesChapmansGrazingIntegral) {
+    const AtmosphereParameters p;
+    const glm::dvec3 net = ReferenceAtmosphere(p).netDensityToTop(0.0, 0.0);
+    const double mie = std::sqrt(kPi * p.earthRadius * p.mieScaleHeight / 2.0);
+    const double rayleigh = std::sqrt(kPi * p.earthRadius * p.rayleighScaleHeight / 2.0);
+    EXPECT_NEAR(net.y, mie, 2e-3 * mie);
+    EXPECT_NEAR(net.x, rayleigh, 5e-3 * rayleigh);  // the top at 80 km cuts the tail (exp(-10))
+}
+
+// With vanishing coefficients nothing is attenuated: looking up from the ground with the sun
+// at the zenith, L1 = sum over species of beta P(1) H (1 - exp(-H_atm / H)).
+TEST(ReferenceAtmosphere, SingleScatteringHasTheOpticallyThinLimit) {
+    AtmosphereParameters p;
+    p.rayleighScattering *= 1e-6;
+    p.mieScattering *= 1e-6;
+    p.mieExtinction *= 1e-6;
+    const ReferenceAtmosphere reference(p);
+    const glm::dvec3 L = reference.singleScattering({0.0, 1.0, 1.0, 1.0});
+    const double rayleighPath = p.rayleighScaleHeight * (1.0 - std::exp(-p.atmosphereHeight / p.rayleighScaleHeight));
+    const double miePath = p.mieScaleHeight * (1.0 - std::exp(-p.atmosphereHeight / p.mieScaleHeight));
+    for (int c = 0; c < 3; ++c) {
+        const double expected = p.rayleighScattering[c] * rayleighPhase(1.0) * rayleighPath + p.mieScattering[c] * miePhase(1.0, p.mieAsymmetry) * miePath;
+        EXPECT_NEAR(L[c], expected, 1e-6 * expected) << "channel " << c;
+    }
+}
+
+TEST(ReferenceAtmosphere, PhaseFunctionsIntegrateToOneOverTheSphere) {
+    for (const double g : {0.0, 0.5, 0.76, 0.9}) {
+        const double mie = 2.0 * kPi * gaussLegendre([&](double mu) { return miePhase(mu, g); }, -1.0, 1.0, 256);
+        EXPECT_NEAR(mie, 1.0, 1e-9) << "g " << g;  // Cornette-Shanks is normalised exactly
+    }
+    EXPECT_NEAR(2.0 * kPi * gaussLegendre(rayleighPhase, -1.0, 1.0, 1), 1.0, 1e-14);
+}
+
+// With the sun 30 degrees below the horizon, every point of the atmosphere above the camera
+// (up to 80 km) is in the Earth's shadow, so no light is scattered.
+TEST(ReferenceAtmosphere, TheEarthsShadowIsDark) {
+    const ReferenceAtmosphere reference{AtmosphereParameters{}};
+    const glm::dvec3 L = reference.singleScattering({0.0, 1.0, -0.5, -0.5});
+    EXPECT_EQ(L, glm::dvec3(0.0));
+    // At dusk (sun 2 degrees down) the zenith sky from the ground is lit high up, and dimmer
+    // than with the sun 2 degrees up.
+    const double dusk = reference.singleScattering({0.0, 1.0, std::sin(-2.0 * kPi / 180.0), 0.0}).b;
+    const double sunset = reference.singleScattering({0.0, 1.0, std::sin(2.0 * kPi / 180.0), 0.0}).b;
+    EXPECT_GT(dusk, 0.0);
+    EXPECT_LT(dusk, sunset);
+}
+
+TEST(ReferenceAtmosphere, RaysEndAtTheGroundOrTheTop) {
+    const AtmosphereParameters p;
+    const ReferenceAtmosphere reference(p);
+    const glm::dvec3 camera(0.0, p.earthRadius + 1000.0, 0.0);
+    EXPECT_NEAR(reference.rayLength(camera, {0.0, -1.0, 0.0}), 1000.0, 1e-6);
+    EXPECT_NEAR(reference.rayLength(camera, {0.0, 1.0, 0.0}), p.atmosphereHeight - 1000.0, 1e-6);
+    EXPECT_TRUE(reference.inEarthShadow(camera, {0.0, -1.0, 0.0}));
+    EXPECT_FALSE(reference.inEarthShadow(camera, {1.0, 0.0, 0.0}));
+}
+
+}  // namespace
+}  // namespace firmament::atmosphere
