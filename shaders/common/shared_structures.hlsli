@@ -27,6 +27,9 @@ struct FrameConstants {
     float4 directionToSun;           // xyz: unit vector towards the sun; w: unused
     float4 screen;                   // xy: size in pixels; zw: 1 / size
     float4 time;                     // x: seconds since start; yzw: unused
+    float4 sunIrradiance;            // rgb: the sun's irradiance above the atmosphere (relative
+                                     // units: the atmosphere's tables are per unit of it); w: unused
+    float4 planet;                   // x: Earth radius (m), its centre at (0, -x, 0); yzw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(FrameConstants);
 
@@ -43,6 +46,13 @@ struct AtmosphereConstants {
     float4 netDensityLutSize;   // xy: the net density LUT: altitude, zenith; zw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(AtmosphereConstants);
+
+// atmosphere/apply_scattering.hlsl
+struct ScatteringPassConstants {
+    uint4 mode;  // x: single scattering (0 none, 1 integration, 2 table); y: integration steps; zw: unused
+    float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(ScatteringPassConstants);
 
 // atmosphere/precompute_*.hlsl: the part of a table one dispatch fills.
 struct PrecomputeSliceConstants {

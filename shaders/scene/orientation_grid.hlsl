@@ -2,6 +2,10 @@
 // ground plane (y = 0) with grid lines every 100 m, 1 km and 10 km, lit by the sun with a
 // Lambert term, under a two-colour sky gradient with a sun disc. Not a physical model: the
 // atmosphere and terrain passes replace it (Basic panel, "Orientation grid").
+// GROUND_ONLY=1 (light scattering on): only the ground, now the Earth's sphere (so that it
+// meets the spherical atmosphere, and curves away seen from orbit), lit by the sun's
+// irradiance with a Lambert term and a flat ambient, and its depth, so that the atmosphere's
+// pass draws the sky and adds aerial perspective. The terrain issue brings physical lighting.
 #include "common/fullscreen_triangle.hlsli"
 #include "common/shared_structures.hlsli"
 
@@ -9,6 +13,7 @@ cbuffer FrameBuffer : register(b0) {
     FrameConstants frame;
 };
 
+static const float kPi = 3.14159265;
 static const float3 kZenithRadiance = float3(0.05, 0.10, 0.30);
 static const float3 kHorizonRadiance = float3(0.35, 0.40, 0.50);
 static const float3 kGroundAlbedo = float3(0.18, 0.20, 0.16);
@@ -16,6 +21,11 @@ static const float3 kLineAlbedo = float3(0.60, 0.60, 0.55);
 static const float3 kSunRadiance = float3(40.0, 38.0, 34.0);
 static const float kCosSunRadius = 0.99985;  // about 1 degree: a disc easy to see
 static const float kHazeDistance = 60000.0;  // metres over which the grid fades into the horizon
+static const float kAmbientFraction = 0.1;     // GROUND_ONLY: a crude stand-in for the sky's light
+
+#ifndef GROUND_ONLY
+#define GROUND_ONLY 0
+#endif
 
 // Coverage of grid lines of the given spacing and width at `position` (metres), filtered by
 // the pixel's footprint so distant lines fade instead of flickering.
@@ -38,17 +48,46 @@ FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
     return fullscreenTriangle(vertexId);
 }
 
-float4 ps_main(FullscreenVertex input) : SV_Target {
+float3 groundAlbedo(float2 ground) {
+    float lines = max(max(gridLines(ground, 100.0, 2.0), gridLines(ground, 1000.0, 12.0)), gridLines(ground, 10000.0, 120.0));
+    return lerp(kGroundAlbedo, kLineAlbedo, lines);
+}
+
+float3 viewDirection(FullscreenVertex input) {
     float2 ndc = float2(input.uv.x * 2.0 - 1.0, 1.0 - input.uv.y * 2.0);
     float4 farPoint = mul(frame.clipToDirection, float4(ndc, 1.0, 1.0));
-    float3 direction = normalize(farPoint.xyz / farPoint.w);
+    return normalize(farPoint.xyz / farPoint.w);
+}
+
+#if GROUND_ONLY
+float4 ps_main(FullscreenVertex input, out float depth : SV_Depth) : SV_Target {
+    float3 direction = viewDirection(input);
+    // The Earth's sphere about (0, -R, 0).
+    float radius = frame.planet.x;
+    float3 fromCentre = frame.cameraPosition.xyz + float3(0.0, radius, 0.0);
+    float b = dot(fromCentre, direction);
+    float discriminant = b * b - (dot(fromCentre, fromCentre) - radius * radius);
+    if (discriminant < 0.0) discard;
+    float distance = -b - sqrt(discriminant);
+    if (distance <= 0.0) discard;
+    float3 ground = frame.cameraPosition.xyz + direction * distance;
+    float4 clip = mul(frame.viewProjection, float4(ground, 1.0));
+    depth = saturate(clip.z / clip.w);
+    if (depth >= 1.0) discard;  // beyond the far plane: the sky pass sees the ground there
+    float3 normal = normalize(ground + float3(0.0, radius, 0.0));
+    float cosSun = dot(normal, frame.directionToSun.xyz);
+    float light = saturate(cosSun) + kAmbientFraction * saturate(cosSun * 4.0 + 0.25);
+    return float4(groundAlbedo(ground.xz) / kPi * frame.sunIrradiance.rgb * light, 1.0);
+}
+#else
+float4 ps_main(FullscreenVertex input) : SV_Target {
+    float3 direction = viewDirection(input);
     float3 radiance = skyRadiance(direction);
 
     if (direction.y < 0.0) {
         float distance = frame.cameraPosition.y / -direction.y;
         float2 ground = frame.cameraPosition.xz + direction.xz * distance;
-        float lines = max(max(gridLines(ground, 100.0, 2.0), gridLines(ground, 1000.0, 12.0)), gridLines(ground, 10000.0, 120.0));
-        float3 albedo = lerp(kGroundAlbedo, kLineAlbedo, lines);
+        float3 albedo = groundAlbedo(ground);
         float sunLight = saturate(frame.directionToSun.y);
         float3 lit = albedo * (sunLight * 3.0 + 0.15);
         float haze = 1.0 - exp(-distance / kHazeDistance);
@@ -56,3 +95,4 @@ float4 ps_main(FullscreenVertex input) : SV_Target {
     }
     return float4(radiance, 1.0);
 }
+#endif

@@ -72,6 +72,7 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
       profiler_(device_.device(), device_.context()),
       frameConstantBuffer_(device_.device()),
       orientationGrid_(device_.device()),
+      atmosphere_(device_.device()),
       toneMapping_(device_.device()),
       flight_(std::move(flight)) {
     log::info("device: " + device_.describe());
@@ -275,6 +276,8 @@ gpu::FrameConstants App::frameConstants() const {
     c.screen = glm::vec4(static_cast<float>(width_), static_cast<float>(height_), 1.0f / static_cast<float>(width_),
                          1.0f / static_cast<float>(height_));
     c.time = glm::vec4(static_cast<float>(timer_.totalSeconds()), 0.0f, 0.0f, 0.0f);
+    c.sunIrradiance = glm::vec4(glm::vec3(state_.atmosphere.sunIntensity), 0.0f);
+    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), 0.0f, 0.0f, 0.0f);
     return c;
 }
 
@@ -287,9 +290,20 @@ void App::renderFrame(bool drawGui) {
         context->ClearRenderTargetView(hdrFrame_.rtv.Get(), kBackground);
         context->ClearDepthStencilView(depth_.dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
     }
+    // Headless runs compute the atmosphere's tables before their first frame; a window spreads
+    // the work over frames and shows the grid's own sky until the tables are ready.
+    if (state_.atmosphere.enabled) atmosphere_.update(context, shaders_, profiler_, state_.atmosphere, options_.headless);
+    const bool scattering = state_.atmosphere.enabled && atmosphere_.ready();
     if (state_.scene.orientationGrid) {
         auto pass = profiler_.scope("Orientation grid");
-        orientationGrid_.render(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), width_, height_);
+        if (scattering)
+            orientationGrid_.renderGround(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), depth_.dsv.Get(), width_, height_);
+        else
+            orientationGrid_.render(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), width_, height_);
+    }
+    if (scattering) {
+        auto pass = profiler_.scope("Light scattering");
+        atmosphere_.render(context, shaders_, state_.atmosphere, frameConstantBuffer_.get(), hdrFrame_, depth_.srv.Get());
     }
     toneMapping_.render(context, shaders_, profiler_, state_.toneMapping, hdrFrame_.srv.Get(), outputTarget(), width_, height_,
                         timer_.deltaSeconds());
@@ -304,7 +318,8 @@ void App::renderFrame(bool drawGui) {
                    std::move(devices),
                    notice_,
                    noticeIsError_,
-                   toneMapping_.latestReading(context, state_.toneMapping)};
+                   toneMapping_.latestReading(context, state_.toneMapping),
+                   atmosphere_.recomputeProgress()};
     handleRequests(overlay_->build(model));
     if (drawGui) {
         auto pass = profiler_.scope("GUI");
@@ -324,6 +339,7 @@ void App::captureFrame() {
     d.adapter = device_.describe();
     d.frame = static_cast<int>(timer_.frameCount());
     d.techniques = toneMapping_.captureAttributes(device, context, state_.toneMapping);
+    if (state_.atmosphere.enabled) d.techniques.merge(atmosphere_.captureAttributes());
     writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, hdrFrame_.texture.Get()), d);
     log::info("captured " + options_.capturePng().string() + " and " + options_.captureExr().string());

@@ -6,6 +6,7 @@
 #include "app/State.h"
 #include "app/StepTimer.h"
 #include "app/Window.h"
+#include "atmosphere/Atmosphere.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/Device.h"
 #include "gpu/GpuProfiler.h"
@@ -58,6 +59,7 @@ private:
     GpuProfiler profiler_;
     ConstantBuffer<gpu::FrameConstants> frameConstantBuffer_;
     OrientationGridPass orientationGrid_;
+    Atmosphere atmosphere_;
     ToneMapping toneMapping_;
     std::unique_ptr<Overlay> overlay_;
 

@@ -18,6 +18,7 @@ std::vector<SettingsSection> State::sections() {
             {"sun", [this](SettingsVisitor& v) { sun.visit(v); }},
             {"flight", [this](SettingsVisitor& v) { flight.visit(v); }},
             {"devices", [this](SettingsVisitor& v) { devices.visit(v); }},
+            {"atmosphere", [this](SettingsVisitor& v) { atmosphere.visit(v); }},
             {"toneMapping", [this](SettingsVisitor& v) { toneMapping.visit(v); }},
             {"shaders", [this](SettingsVisitor& v) { shaders.visit(v); }},
             {"ui", [this](SettingsVisitor& v) { ui.visit(v); }}};

@@ -5,6 +5,7 @@
 //
 //   {"format": 1, "camera": {"position": [0, 8000, 0], "yaw": 0, ...}, "sun": {...}, ...,
 //    "bookmarks": {"1": {"camera": {...}, "sun": {...}}}}
+#include "atmosphere/AtmosphereSettings.h"
 #include "core/Camera.h"
 #include "core/Settings.h"
 #include "input/FlyCamera.h"
@@ -63,6 +64,7 @@ struct State {
     Sun sun;
     FlightSettings flight;
     DeviceSettings devices;
+    AtmosphereSettings atmosphere;
     ToneMappingSettings toneMapping;
     ShaderSettings shaders;
     UiSettings ui;

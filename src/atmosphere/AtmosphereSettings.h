@@ -12,10 +12,18 @@
 namespace firmament {
 
 enum class LutResolution { Small, Medium, Full };
+// Where single scattering comes from at render time (document 000's Additional panel); the
+// order is the shader's mode index (shaders/atmosphere/apply_scattering.hlsl).
+enum class SingleScatteringMode { None, Integration, Table };
+inline constexpr std::array<std::string_view, 3> kSingleScatteringModeNames{"None", "Integration", "LUT"};
 inline constexpr std::array<std::string_view, 3> kLutResolutionNames{"Small (8x32x16x8)", "Medium (16x64x32x8)",
                                                                      "Full (32x128x64x16)"};
 
 struct AtmosphereSettings {
+    bool enabled = true;             // "Enable light scattering": the sky and aerial perspective
+    SingleScatteringMode singleScattering = SingleScatteringMode::Table;
+    int integrationSteps = 30;       // per ray, in the Integration mode
+    float sunIntensity = 1.0f;       // the sun's irradiance above the atmosphere (relative units)
     float aerosolDensity = 1.0f;     // scales the Mie scattering coefficient
     float aerosolAbsorption = 0.1f;  // Mie extinction = scattering * (1 + this)
     float mieAsymmetry = 0.76f;      // g of the Cornette-Shanks phase function
@@ -28,6 +36,10 @@ struct AtmosphereSettings {
     LutResolution resolution = LutResolution::Full;
 
     void visit(SettingsVisitor& v) {
+        v.field("enabled", enabled, "Enable light scattering");
+        v.choice("singleScattering", singleScattering, kSingleScatteringModeNames, "Single scattering mode");
+        v.field("integrationSteps", integrationSteps, {5, 100}, "Num integration steps");
+        v.field("sunIntensity", sunIntensity, {0.01f, 100.0f, true}, "Sun intensity");
         v.field("aerosolDensity", aerosolDensity, {0.1f, 5.0f}, "Aerosol density");
         v.field("aerosolAbsorption", aerosolAbsorption, {0.0f, 5.0f}, "Aerosol absorption");
         v.field("mieAsymmetry", mieAsymmetry, {0.0f, 0.95f}, "Mie asymmetry g");

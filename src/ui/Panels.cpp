@@ -18,18 +18,30 @@ const SettingsSection& section(const std::vector<SettingsSection>& sections, std
     return *std::find_if(sections.begin(), sections.end(), [&](const SettingsSection& s) { return s.name == name; });
 }
 
+void atmosphereProgress(const GuiModel& m) {
+    if (!m.atmosphereProgress) return;
+    ImGui::ProgressBar(static_cast<float>(*m.atmosphereProgress), ImVec2(-1, 0), "Computing the atmosphere's tables");
+}
+
 void basicPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRequests& requests) {
     requests.toggleFullScreen = ImGui::Button("Full screen");
     ImGui::SameLine();
     editSection(section(sections, "display"), {"vsync"});
     editSection(section(sections, "scene"));
+    editSection(section(sections, "atmosphere"), {"enabled"});
     ImGui::SeparatorText("Sun");
     editSection(section(sections, "sun"));
+    editSection(section(sections, "atmosphere"), {"sunIntensity"});
     ImGui::TextDisabled("Right mouse drag turns the sun.");
-    (void)m;
+    atmosphereProgress(m);
 }
 
 void additionalPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRequests& requests) {
+    ImGui::SeparatorText("Atmosphere");
+    editSection(section(sections, "atmosphere"), {"singleScattering", "integrationSteps", "aerosolDensity", "aerosolAbsorption",
+                                                   "mieAsymmetry", "customCoefficients", "ozone", "lutResolution"});
+    if (m.state.atmosphere.customCoefficients) editSection(section(sections, "atmosphere"), {"rayleighColour", "mieColour"});
+    atmosphereProgress(m);
     ImGui::SeparatorText("Camera");
     editSection(section(sections, "camera"));
     ImGui::SeparatorText("Flight");

@@ -8,6 +8,7 @@
 #include "ui/FrameTimeHistory.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct GuiModel {
     std::string notice;                // the last save / load / reload message
     bool noticeIsError = false;
     ExposureReading exposure;          // what the tone mapping applied, a few frames ago
+    std::optional<double> atmosphereProgress;  // 0..1 while the atmosphere's tables are recomputed
 };
 
 struct GuiRequests {

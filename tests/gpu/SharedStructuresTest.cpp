@@ -14,7 +14,7 @@ TEST_F(WarpDevice, FrameConstantsHaveTheSameLayoutInHlslAndCpp) {
     ConstantBuffer<gpu::FrameConstants> buffer(device());
     buffer.update(context(), constants);
 
-    auto output = structuredBuffer(std::vector<glm::vec4>(16, glm::vec4(-1.0f)), true);
+    auto output = structuredBuffer(std::vector<glm::vec4>(18, glm::vec4(-1.0f)), true);
     ComPtr<ID3D11UnorderedAccessView> uav;
     ASSERT_HRESULT_SUCCEEDED(device()->CreateUnorderedAccessView(output.Get(), nullptr, &uav));
     context()->CSSetShader(testShaderLibrary->computeShader({"constants/echo_frame_constants.hlsl", "main", "cs_5_0", {}}), nullptr, 0);
@@ -34,6 +34,8 @@ TEST_F(WarpDevice, FrameConstantsHaveTheSameLayoutInHlslAndCpp) {
     EXPECT_EQ(echoed[13], constants.directionToSun);
     EXPECT_EQ(echoed[14], constants.screen);
     EXPECT_EQ(echoed[15], constants.time);
+    EXPECT_EQ(echoed[16], constants.sunIrradiance);
+    EXPECT_EQ(echoed[17], constants.planet);
 }
 
 }  // namespace

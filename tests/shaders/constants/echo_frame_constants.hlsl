@@ -21,4 +21,6 @@ void main() {
     echoed[13] = frame.directionToSun;
     echoed[14] = frame.screen;
     echoed[15] = frame.time;
+    echoed[16] = frame.sunIrradiance;
+    echoed[17] = frame.planet;
 }

@@ -1,0 +1,87 @@
+// Light scattering without light shafts (document 000: "Enable light scattering" on, "Enable
+// light shafts" off). Per pixel:
+//  - no geometry (depth 1): the sky, L(C, v) times the sun's irradiance, and the sun's disc
+//    attenuated by the atmosphere where the ground does not hide it;
+//  - geometry at P: its radiance times T(C -> P), plus the light scattered in between,
+//    L(C, v) - T(C -> P) L(P, v) (eq. 8).
+// Single scattering comes from the table, from numerical integration along the ray (the
+// reference the table is measured against), or not at all.
+#include "common/fullscreen_triangle.hlsli"
+#include "atmosphere/aerial_perspective.hlsli"
+
+cbuffer FrameBuffer : register(b0) {
+    FrameConstants frame;
+};
+cbuffer AtmosphereBuffer : register(b1) {
+    AtmosphereConstants atmosphere;
+};
+cbuffer ScatteringPassBuffer : register(b2) {
+    ScatteringPassConstants scattering;
+};
+
+Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before this pass
+Texture2D<float> sceneDepth : register(t1);
+Texture2D<float4> netDensityLut : register(t2);
+Texture3D<float4> singleScatteringLut : register(t3);
+SamplerState linearClamp : register(s0);
+
+static const uint kSingleScatteringNone = 0;
+static const uint kSingleScatteringIntegration = 1;
+
+FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
+    return fullscreenTriangle(vertexId);
+}
+
+// Single scattering per unit irradiance along start -> start + length viewDir.
+float3 inscattering(float3 start, float3 viewDir, float3 sunDir, float rayLength, bool hitsGround, bool toEnd) {
+    if (scattering.mode.x == kSingleScatteringNone) return 0.0;
+    if (scattering.mode.x == kSingleScatteringIntegration)
+        return integrateSingleScattering(atmosphere, netDensityLut, linearClamp, start, viewDir, sunDir, rayLength, (int)scattering.mode.y);
+    int side = hitsGround ? kBelowHorizon : kAboveHorizon;
+    float3 fromStart = lookUpScattering(atmosphere, singleScatteringLut, linearClamp, start, viewDir, sunDir, side);
+    if (toEnd) return fromStart;
+    float3 end = start + viewDir * rayLength;
+    float3 fromEnd = lookUpScattering(atmosphere, singleScatteringLut, linearClamp, end, viewDir, sunDir, side);
+    return max(fromStart - transmittanceBetween(atmosphere, netDensityLut, linearClamp, start, end, viewDir) * fromEnd, 0.0);
+}
+
+float4 ps_main(FullscreenVertex input) : SV_Target {
+    int2 pixel = int2(input.position.xy);
+    float depth = sceneDepth.Load(int3(pixel, 0));
+    float3 radiance = sceneRadiance.Load(int3(pixel, 0)).rgb;
+    float2 ndc = float2(input.uv.x * 2.0 - 1.0, 1.0 - input.uv.y * 2.0);
+    float4 farPoint = mul(frame.clipToDirection, float4(ndc, 1.0, 1.0));
+    float3 viewDir = normalize(farPoint.xyz / farPoint.w);
+    float3 sunDir = frame.directionToSun.xyz;
+    float3 earthCentre = float3(0.0, -atmosphere.earth.x, 0.0);
+    float3 start = frame.cameraPosition.xyz - earthCentre;
+
+    float offset;
+    bool inAtmosphere = clipRayToAtmosphere(atmosphere, start, viewDir, offset);
+    bool geometry = depth < 1.0;
+    float geometryDistance = 0.0;
+    if (geometry) {
+        float4 world = mul(frame.inverseViewProjection, float4(ndc, depth, 1.0));
+        geometryDistance = length(world.xyz / world.w - frame.cameraPosition.xyz) - offset;
+    }
+    if (!inAtmosphere || (geometry && geometryDistance <= 0.0)) {
+        // Outside the atmosphere: geometry and the sun as they are, space is black.
+        bool sunHere = !geometry && dot(viewDir, sunDir) > scattering.sun.x && !rayHitsGround(atmosphere, frame.cameraPosition.xyz - earthCentre, viewDir);
+        return float4(geometry ? radiance : (sunHere ? frame.sunIrradiance.rgb * scattering.sun.y : 0.0), 1.0);
+    }
+
+    bool hitsGround = rayHitsGround(atmosphere, start, viewDir);
+    float toEnd = rayLengthInAtmosphere(atmosphere, start, viewDir, hitsGround);
+    if (geometry && geometryDistance < toEnd) {
+        float3 end = start + viewDir * geometryDistance;
+        float3 transmittance = transmittanceBetween(atmosphere, netDensityLut, linearClamp, start, end, viewDir);
+        float3 scattered = inscattering(start, viewDir, sunDir, geometryDistance, hitsGround, false);
+        return float4(radiance * transmittance + frame.sunIrradiance.rgb * scattered, 1.0);
+    }
+    float3 sky = frame.sunIrradiance.rgb * inscattering(start, viewDir, sunDir, toEnd, hitsGround, true);
+    if (!hitsGround && dot(viewDir, sunDir) > scattering.sun.x) {
+        float h = length(start) - atmosphere.earth.x;
+        sky += frame.sunIrradiance.rgb * scattering.sun.y * sunTransmittance(atmosphere, netDensityLut, linearClamp, h, dot(normalize(start), viewDir));
+    }
+    return float4(sky, 1.0);
+}
