@@ -44,6 +44,22 @@ const Options& checkedOptions(const Options& options) {
     return options;
 }
 
+// The cache of the atmosphere's tables: --cache-dir, else %LOCALAPPDATA%\Firmament\cache,
+// else a "cache" folder beside the program.
+TableStorage tableStorage(const Options& options) {
+    TableStorage storage;
+    storage.exportFolder = options.exportLuts;
+    if (options.noCache) return storage;
+    if (options.cacheDir) {
+        storage.cacheFolder = options.cacheDir;
+    } else if (const wchar_t* localAppData = _wgetenv(L"LOCALAPPDATA"); localAppData && *localAppData) {
+        storage.cacheFolder = std::filesystem::path(localAppData) / "Firmament" / "cache";
+    } else {
+        storage.cacheFolder = executableFolder() / "cache";
+    }
+    return storage;
+}
+
 DeviceOptions deviceOptions(const Options& options) {
     DeviceOptions d;
     d.driver = options.driver;
@@ -72,7 +88,7 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
       profiler_(device_.device(), device_.context()),
       frameConstantBuffer_(device_.device()),
       orientationGrid_(device_.device()),
-      atmosphere_(device_.device()),
+      atmosphere_(device_.device(), tableStorage(options_)),
       toneMapping_(device_.device()),
       flight_(std::move(flight)) {
     log::info("device: " + device_.describe());

@@ -139,8 +139,11 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
                 return result;
             }
             o.shaderCompiler = *v;
+        } else if (flag == "--no-cache") {
+            if (!noValue()) return result;
+            o.noCache = true;
         } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file" || flag == "--flight" ||
-                   flag == "--record-flight") {
+                   flag == "--record-flight" || flag == "--export-luts" || flag == "--cache-dir") {
             const auto v = value();
             if (!v) return result;
             if (v->empty()) {
@@ -151,6 +154,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             else if (flag == "--settings") o.settingsFile = std::filesystem::path(*v);
             else if (flag == "--flight") o.flight = std::filesystem::path(*v);
             else if (flag == "--record-flight") o.recordFlight = std::filesystem::path(*v);
+            else if (flag == "--export-luts") o.exportLuts = std::filesystem::path(*v);
+            else if (flag == "--cache-dir") o.cacheDir = std::filesystem::path(*v);
             else o.stateFile = std::filesystem::path(*v);
         } else if (flag == "--set") {
             const auto v = value();
@@ -215,6 +220,12 @@ Settings
   --flight FILE          play a recorded camera flight (JSON keyframes); headless
                          runs render its whole length unless --frames is given
   --record-flight FILE   write the camera and sun, ten keyframes a second, on exit
+Atmosphere
+  --export-luts DIR      write every look-up table as a self-describing EXR into DIR
+                         once computed (or loaded)
+  --cache-dir DIR        where computed tables are kept and reused
+                         (default: %LOCALAPPDATA%\Firmament\cache)
+  --no-cache             compute the tables every run; read and write no cache
 Shaders
   --shader-dir DIR       compiled shaders (default: 'shaders' beside the program)
   --shader-source DIR    HLSL folder that F8 and file changes reload from

@@ -28,6 +28,9 @@ struct Options {
     std::filesystem::path stateFile = "firmament-state.json";  // F5 saves it, F9 loads it
     std::optional<std::filesystem::path> flight;        // camera path played back
     std::optional<std::filesystem::path> recordFlight;  // where the flown path is written
+    std::optional<std::filesystem::path> exportLuts;    // write the atmosphere's tables here as EXR
+    std::optional<std::filesystem::path> cacheDir;      // the atmosphere's table cache (default: per user)
+    bool noCache = false;                               // compute the tables every run
     bool help = false;
     bool version = false;
 

@@ -4,19 +4,27 @@
 // tables changes, new tables are computed one unit of work per frame while the old ones stay
 // in use, and replace them when complete; a headless run computes them at once. Until the
 // first tables exist, ready() is false and the program shows the orientation grid's sky.
+// Tables are cached on disk as OpenEXR (ScatteringTableFiles), keyed by everything that shapes
+// them, and loaded instead of computed when a valid file is there.
 #include "atmosphere/ScatteringPass.h"
 #include "atmosphere/ScatteringPrecomputation.h"
 #include "core/ExrImage.h"
 #include "gpu/GpuProfiler.h"
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 
 namespace firmament {
 
+struct TableStorage {
+    std::optional<std::filesystem::path> cacheFolder;   // none: no cache
+    std::optional<std::filesystem::path> exportFolder;  // --export-luts: every new table set is written here
+};
+
 class Atmosphere {
 public:
-    explicit Atmosphere(ID3D11Device* device);
+    Atmosphere(ID3D11Device* device, TableStorage storage);
 
     // Starts a recompute when the parameters changed; advances it by one unit, or finishes it
     // when `finishNow` (headless runs, and the first frame).
@@ -33,10 +41,16 @@ public:
     ExrAttributes captureAttributes() const;
 
 private:
+    void start(ID3D11DeviceContext* context, const AtmosphereParameters& parameters, const std::string& key);
+    void finish(ID3D11DeviceContext* context);
+
     ID3D11Device* device_;
+    TableStorage storage_;
     ScatteringPass pass_;
     std::unique_ptr<ScatteringPrecomputation> current_;  // complete
     std::unique_ptr<ScatteringPrecomputation> pending_;  // being computed
+    std::string currentKey_, pendingKey_;
+    bool pendingFromCache_ = false;
 };
 
 }  // namespace firmament

@@ -39,6 +39,20 @@ gpu::AtmosphereConstants AtmosphereParameters::constants() const {
     return c;
 }
 
+ExrAttributes AtmosphereParameters::exrAttributes() const {
+    return {
+        {"firmament.atmosphere.parameters", describe()},
+        {"firmament.atmosphere.earthRadius", static_cast<float>(earthRadius)},
+        {"firmament.atmosphere.atmosphereHeight", static_cast<float>(atmosphereHeight)},
+        {"firmament.atmosphere.scaleHeights", glm::vec3(static_cast<float>(rayleighScaleHeight), static_cast<float>(mieScaleHeight), 0.0f)},
+        {"firmament.atmosphere.rayleighScattering", glm::vec3(rayleighScattering)},
+        {"firmament.atmosphere.mieScattering", glm::vec3(mieScattering)},
+        {"firmament.atmosphere.mieExtinction", glm::vec3(mieExtinction)},
+        {"firmament.atmosphere.mieAsymmetry", static_cast<float>(mieAsymmetry)},
+        {"firmament.atmosphere.ozoneAbsorption", glm::vec3(ozoneAbsorption)},
+    };
+}
+
 std::string AtmosphereParameters::describe() const {
     char text[1024];
     std::snprintf(text, sizeof(text),

@@ -5,11 +5,11 @@
 // Every constant lives here; the shaders get them through AtmosphereConstants
 // (shaders/common/shared_structures.hlsli). docs/atmosphere.md gives the equations.
 #include "atmosphere/AtmosphereSettings.h"
+#include "core/ExrImage.h"
 #include "gpu/SharedStructures.h"
 
 #include <glm/glm.hpp>
 
-#include <cstdint>
 #include <string>
 
 namespace firmament {
@@ -47,6 +47,8 @@ struct AtmosphereParameters {
     gpu::AtmosphereConstants constants() const;
     // Everything that changes the look-up tables, as text: the cache key's source.
     std::string describe() const;
+    // "firmament.atmosphere.*" header attributes: the constants, for captures and table files.
+    ExrAttributes exrAttributes() const;
 };
 
 // Physical coefficients at the default settings (Intel's sample, document 000), and the

@@ -32,6 +32,8 @@ public:
     void runAll(ID3D11DeviceContext* context, ShaderLibrary& shaders);
 
     bool done() const { return next_ >= units_.size(); }
+    // The tables were filled another way (from files): nothing is left to run.
+    void markComplete() { next_ = units_.size(); }
     double progress() const { return units_.empty() ? 1.0 : static_cast<double>(next_) / static_cast<double>(units_.size()); }
     std::string currentStage() const;  // "net density", "single scattering", or "done"
 

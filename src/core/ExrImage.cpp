@@ -2,7 +2,11 @@
 
 #include "core/Error.h"
 
+#include <ImfChannelList.h>
 #include <ImfFloatAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 #include <ImfHeader.h>
 #include <ImfIntAttribute.h>
 #include <ImfMatrixAttribute.h>
@@ -83,6 +87,52 @@ void writeExr(const std::filesystem::path& path, const HalfRgbaImage& image, con
         file.writePixels(image.height);
     } catch (const std::exception& e) {
         throw Error("cannot write the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
+void writeExr(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes) {
+    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+        throw Error("writeExr: image size does not match its pixel data");
+    try {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, value] : attributes) insertAttribute(header, name, value);
+        Imf::FrameBuffer frame;
+        const char* channels[4] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            header.channels().insert(channels[c], Imf::Channel(Imf::FLOAT));
+            frame.insert(channels[c], Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(image.rgba.data() + c)),
+                                                 sizeof(float) * 4, sizeof(float) * 4 * static_cast<size_t>(image.width)));
+        }
+        Imf::OutputFile file(path.string().c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {
+        throw Error("cannot write the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
+FloatExrFile readFloatExr(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile file(path.string().c_str());
+        const Imath::Box2i window = file.header().dataWindow();
+        FloatExrFile out;
+        out.image.width = window.max.x - window.min.x + 1;
+        out.image.height = window.max.y - window.min.y + 1;
+        out.image.rgba.assign(static_cast<size_t>(out.image.width) * out.image.height * 4, 0.0f);
+        Imf::FrameBuffer frame;
+        const char* channels[4] = {"R", "G", "B", "A"};
+        char* base = reinterpret_cast<char*>(out.image.rgba.data()) -
+                     (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * out.image.width) * 16;
+        for (int c = 0; c < 4; ++c)
+            frame.insert(channels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(float) * 4,
+                                                 sizeof(float) * 4 * static_cast<size_t>(out.image.width)));
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        out.attributes = readAttributes(file.header());
+        return out;
+    } catch (const std::exception& e) {
+        throw Error("cannot read the EXR file '" + path.string() + "': " + e.what());
     }
 }
 

@@ -30,7 +30,21 @@ struct ExrFile {
     ExrAttributes attributes;  // only the attributes of the types above; others are skipped
 };
 
+// 32-bit float RGBA, for look-up tables whose values exceed the half range.
+struct FloatRgbaImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgba;  // top row first
+};
+
+struct FloatExrFile {
+    FloatRgbaImage image;
+    ExrAttributes attributes;
+};
+
 void writeExr(const std::filesystem::path& path, const HalfRgbaImage& image, const ExrAttributes& attributes);
-ExrFile readExr(const std::filesystem::path& path);  // throws Error
+void writeExr(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes);
+ExrFile readExr(const std::filesystem::path& path);            // throws Error
+FloatExrFile readFloatExr(const std::filesystem::path& path);  // any pixel type, converted; throws Error
 
 }  // namespace firmament

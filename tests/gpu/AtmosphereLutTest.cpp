@@ -5,6 +5,8 @@
 #include "WarpDevice.h"
 #include "atmosphere/ReferenceAtmosphere.h"
 #include "atmosphere/ScatteringPrecomputation.h"
+#include "atmosphere/ScatteringTableFiles.h"
+#include "core/FileIO.h"
 #include "gpu/ConstantBuffer.h"
 
 #include <Imath/half.h>
@@ -230,6 +232,43 @@ TEST_F(AtmosphereTables, NoNanOrInfAnywhere) {
         for (size_t i = 0; i < got.size(); ++i)
             for (int ch = 0; ch < 3; ++ch) ASSERT_TRUE(std::isfinite(got[i][ch]) && got[i][ch] >= 0.0f) << entry << " query " << i;
     }
+}
+
+// The table files: what is written reads back bit for bit into fresh tables; a corrupt file,
+// another key and missing files are each refused with a reason.
+TEST_F(AtmosphereTables, TableFilesRoundTripAndRefuseBadFiles) {
+    const auto computed = precompute(LutResolution::Small);
+    const std::string key = scatteringTableKey(computed->parameters(), *productShaderLibrary);
+    EXPECT_EQ(key.size(), 16u);
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-table-files";
+    std::filesystem::remove_all(folder);
+    writeScatteringTables(device(), context(), *computed, key, folder, "k-");
+
+    ScatteringPrecomputation loaded(device(), computed->parameters());
+    EXPECT_FALSE(loaded.done());
+    EXPECT_EQ(readScatteringTables(context(), loaded, key, folder, "k-"), "");
+    EXPECT_TRUE(loaded.done());
+    EXPECT_EQ(readTexture3D(device(), context(), loaded.tables().singleScattering.texture.Get()).bytes,
+              readTexture3D(device(), context(), computed->tables().singleScattering.texture.Get()).bytes);
+    EXPECT_EQ(readTexture2D(device(), context(), loaded.tables().netDensity.texture.Get()).bytes,
+              readTexture2D(device(), context(), computed->tables().netDensity.texture.Get()).bytes);
+
+    ScatteringPrecomputation other(device(), computed->parameters());
+    EXPECT_EQ(readScatteringTables(context(), other, key, folder, "absent-"), "missing");
+    EXPECT_NE(readScatteringTables(context(), other, "0123456789abcdef", folder, "k-").find("key differs"), std::string::npos);
+    AtmosphereParameters bigger = computed->parameters();
+    bigger.lut = LutDimensions::of(LutResolution::Medium);
+    ScatteringPrecomputation resized(device(), bigger);
+    EXPECT_NE(readScatteringTables(context(), resized, key, folder, "k-").find("not"), std::string::npos);
+    // Cut the single scattering file in half: unreadable, and the message names it.
+    const auto path = folder / "k-single-scattering.exr";
+    auto bytes = readFileBytes(path);
+    bytes.resize(bytes.size() / 2);
+    writeFileBytes(path, bytes);
+    const std::string why = readScatteringTables(context(), other, key, folder, "k-");
+    EXPECT_NE(why.find("k-single-scattering.exr"), std::string::npos) << why;
+    EXPECT_FALSE(other.done());
+    std::filesystem::remove_all(folder);
 }
 
 }  // namespace

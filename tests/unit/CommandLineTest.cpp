@@ -90,5 +90,17 @@ TEST(CommandLine, UsageListsEveryOption) {
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 
+TEST(CommandLine, AtmosphereTableOptions) {
+    const ParsedCommandLine p = parse({"--export-luts", "tables", "--cache-dir", "cache"});
+    ASSERT_TRUE(p.error.empty()) << p.error;
+    EXPECT_EQ(p.options.exportLuts, std::filesystem::path("tables"));
+    EXPECT_EQ(p.options.cacheDir, std::filesystem::path("cache"));
+    EXPECT_FALSE(p.options.noCache);
+    EXPECT_TRUE(parse({"--no-cache"}).options.noCache);
+    expectError({"--export-luts"}, "--export-luts");
+    expectError({"--export-luts", ""}, "empty");
+    expectError({"--no-cache=yes"}, "--no-cache");
+}
+
 }  // namespace
 }  // namespace firmament

@@ -74,5 +74,26 @@ TEST(ExrImage, ImageSizeMismatchIsRejected) {
     EXPECT_THROW(writeExr(tempPath("firmament-bad.exr"), image, {}), Error);
 }
 
+// 32-bit float images keep values the half type cannot hold (net densities of 1e6 and more)
+// bit for bit, and the half reader's files read back through the float reader.
+TEST(ExrImage, FloatPixelsRoundTripBitForBit) {
+    const auto path = tempPath("firmament-exr-float-test.exr");
+    FloatRgbaImage image{7, 5, {}};
+    for (int i = 0; i < 7 * 5 * 4; ++i) image.rgba.push_back(std::ldexp(1.0f + 0.001f * static_cast<float>(i), i % 60 - 20) * (i % 3 ? 1.0f : -1.0f));
+    writeExr(path, image, {{"test.key", std::string("abc")}});
+    const FloatExrFile file = readFloatExr(path);
+    std::filesystem::remove(path);
+    ASSERT_EQ(file.image.width, 7);
+    ASSERT_EQ(file.image.height, 5);
+    EXPECT_EQ(file.image.rgba, image.rgba);
+    EXPECT_EQ(std::get<std::string>(file.attributes.at("test.key")), "abc");
+
+    const auto halfPath = tempPath("firmament-exr-half-as-float.exr");
+    writeExr(halfPath, rampImage(4, 3), {});
+    const FloatExrFile widened = readFloatExr(halfPath);
+    std::filesystem::remove(halfPath);
+    EXPECT_EQ(widened.image.rgba[4 * 4 + 1], std::ldexp(1.0f, 1 - 8));  // pixel (0, 1), green
+}
+
 }  // namespace
 }  // namespace firmament

@@ -1,0 +1,165 @@
+#include "atmosphere/ScatteringTableFiles.h"
+
+#include "core/Error.h"
+#include "gpu/Readback.h"
+
+#include <windows.h>
+
+#include <cstdio>
+#include <cstring>
+
+namespace firmament {
+
+namespace {
+
+constexpr int kFormatVersion = 1;  // raise when the files' layout changes
+
+// FNV-1a, 64 bits: stable across builds and platforms, unlike std::hash.
+std::uint64_t fnv1a(const void* data, size_t size, std::uint64_t hash) {
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 0x100000001b3ull;
+    return hash;
+}
+
+const ShaderKey kPrecomputeShaders[] = {{"atmosphere/precompute_net_density.hlsl", "main", "cs_5_0", {}},
+                                        {"atmosphere/precompute_single_scattering.hlsl", "main", "cs_5_0", {}}};
+
+std::string dimensions(const LutDimensions& n) {
+    char text[128];
+    std::snprintf(text, sizeof(text), "%d x %d x %d x %d (altitude, view zenith, sun zenith, sun-view)", n.height, n.viewZenith,
+                  n.sunZenith, n.sunView);
+    return text;
+}
+
+ExrAttributes commonAttributes(const AtmosphereParameters& p, const std::string& key) {
+    ExrAttributes a = p.exrAttributes();
+    a["firmament.lut.key"] = key;
+    a["firmament.lut.formatVersion"] = kFormatVersion;
+    a["firmament.lut.parameterization"] = std::string(
+        "Yusov 2013 (document 000, eq. 4-7): u_h = sqrt(h / H_atm); view zenith: 0.5 ((c - c_h) / (1 - c_h))^0.2 + 0.5 above "
+        "the horizon, 0.5 ((c_h - c) / (c_h + 1))^0.2 below, c_h = -sqrt(h (2R + h)) / (R + h); sun zenith: 0.5 (atan(max(c, "
+        "-0.1975) tan(1.386)) / 1.1 + 0.74); sun-view: 0.5 +- 0.5 |2 (theta / pi - 0.5)|^1.5. Texel centres sit at u = i / (N - 1); "
+        "the view zenith's halves each span N / 2 texels.");
+    return a;
+}
+
+void writeAtomically(const std::filesystem::path& path, const auto& image, const ExrAttributes& attributes) {
+    // A name of this process's own: two programs may cache the same tables at once.
+    const auto temporary = std::filesystem::path(path).concat(".part" + std::to_string(GetCurrentProcessId()));
+    writeExr(temporary, image, attributes);
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) throw Error("cannot move '" + temporary.string() + "' to '" + path.string() + "': " + ec.message());
+}
+
+std::string checkHeader(const ExrAttributes& a, const std::string& key, int width, int height, int fileWidth, int fileHeight) {
+    const auto found = a.find("firmament.lut.key");
+    if (found == a.end() || !std::holds_alternative<std::string>(found->second)) return "it has no firmament.lut.key";
+    if (std::get<std::string>(found->second) != key) return "its key differs (made for other parameters or shaders)";
+    if (fileWidth != width || fileHeight != height)
+        return "it is " + std::to_string(fileWidth) + "x" + std::to_string(fileHeight) + ", not " + std::to_string(width) + "x" +
+               std::to_string(height);
+    return {};
+}
+
+}  // namespace
+
+std::string scatteringTableKey(const AtmosphereParameters& parameters, ShaderLibrary& shaders) {
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    const std::string text = parameters.describe() + " format=" + std::to_string(kFormatVersion);
+    hash = fnv1a(text.data(), text.size(), hash);
+    for (const ShaderKey& key : kPrecomputeShaders) {
+        const auto& bytecode = shaders.bytecode(key);
+        hash = fnv1a(bytecode.data(), bytecode.size(), hash);
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
+void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, const ScatteringPrecomputation& tables,
+                           const std::string& key, const std::filesystem::path& folder, const std::string& prefix) {
+    const AtmosphereParameters& p = tables.parameters();
+    const LutDimensions& n = p.lut;
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw Error("cannot create the folder '" + folder.string() + "': " + ec.message());
+
+    // Net density: one texel per pixel.
+    const ReadbackImage density = readTexture2D(device, context, tables.tables().netDensity.texture.Get());
+    FloatRgbaImage densityImage{density.width, density.height, std::vector<float>(density.bytes.size() / 4)};
+    std::memcpy(densityImage.rgba.data(), density.bytes.data(), density.bytes.size());
+    ExrAttributes a = commonAttributes(p, key);
+    a["firmament.lut.name"] = std::string("net density to the top of the atmosphere");
+    a["firmament.lut.dimensions"] = std::to_string(n.netDensityZenith) + " x " + std::to_string(n.netDensityHeight) + " (zenith, altitude)";
+    a["firmament.lut.layout"] = std::string(
+        "x: cosine of the zenith angle, -1 to 1 at texel centres; y: altitude, u_h = sqrt(h / H_atm), 0 in the top row. "
+        "R, G, B: Rayleigh, Mie and ozone density integrated along the ray to the top (m of sea-level density; the ozone "
+        "layer's peak density for B). Rays that meet the ground hold the grazing ray's value.");
+    writeAtomically(folder / (prefix + "net-density.exr"), densityImage, a);
+
+    // Single scattering: each z slice (sun-view s, sun zenith z) is a tile at column z, row s.
+    const ReadbackVolume volume = readTexture3D(device, context, tables.tables().singleScattering.texture.Get());
+    HalfRgbaImage scatteringImage{n.height * n.sunZenith, n.viewZenith * n.sunView, {}};
+    scatteringImage.halfBits.resize(static_cast<size_t>(scatteringImage.width) * scatteringImage.height * 4);
+    for (int z = 0; z < volume.depth; ++z) {
+        const int column = z % n.sunZenith, row = z / n.sunZenith;
+        for (int y = 0; y < volume.height; ++y) {
+            const size_t from = (static_cast<size_t>(z) * volume.height + y) * volume.width * 8;
+            const size_t to = ((static_cast<size_t>(row) * n.viewZenith + y) * scatteringImage.width + column * n.height) * 4;
+            std::memcpy(scatteringImage.halfBits.data() + to, volume.bytes.data() + from, static_cast<size_t>(volume.width) * 8);
+        }
+    }
+    a = commonAttributes(p, key);
+    a["firmament.lut.name"] = std::string("single scattering L_in^(1), per unit sun irradiance (1/sr)");
+    a["firmament.lut.dimensions"] = dimensions(n);
+    a["firmament.lut.layout"] = std::string(
+        "tiles of " + std::to_string(n.height) + " x " + std::to_string(n.viewZenith) +
+        " texels: x altitude, y view zenith (rows 0 to N/2-1 below the horizon, from it downwards; rows N/2 to N-1 above it, "
+        "from it up to the zenith). Tile column: sun zenith (" + std::to_string(n.sunZenith) + "), tile row: sun-view angle (" +
+        std::to_string(n.sunView) + "). The GPU's 3D texture is the tiles stacked as z = row * " + std::to_string(n.sunZenith) +
+        " + column.");
+    writeAtomically(folder / (prefix + "single-scattering.exr"), scatteringImage, a);
+}
+
+std::string readScatteringTables(ID3D11DeviceContext* context, ScatteringPrecomputation& tables, const std::string& key,
+                                 const std::filesystem::path& folder, const std::string& prefix) {
+    const LutDimensions& n = tables.parameters().lut;
+    const auto densityPath = folder / (prefix + "net-density.exr"), scatteringPath = folder / (prefix + "single-scattering.exr");
+    std::error_code ec;
+    if (!std::filesystem::exists(densityPath, ec) && !std::filesystem::exists(scatteringPath, ec)) return "missing";
+    FloatExrFile density;
+    ExrFile scattering;
+    try {
+        density = readFloatExr(densityPath);
+        scattering = readExr(scatteringPath);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    if (auto why = checkHeader(density.attributes, key, n.netDensityZenith, n.netDensityHeight, density.image.width, density.image.height);
+        !why.empty())
+        return densityPath.string() + ": " + why;
+    if (auto why = checkHeader(scattering.attributes, key, n.height * n.sunZenith, n.viewZenith * n.sunView, scattering.image.width,
+                               scattering.image.height);
+        !why.empty())
+        return scatteringPath.string() + ": " + why;
+
+    context->UpdateSubresource(tables.tables().netDensity.texture.Get(), 0, nullptr, density.image.rgba.data(),
+                               static_cast<UINT>(density.image.width * 16), 0);
+    const glm::ivec3 packed = n.packed3d();
+    std::vector<std::uint16_t> volume(static_cast<size_t>(packed.x) * packed.y * packed.z * 4);
+    for (int z = 0; z < packed.z; ++z) {
+        const int column = z % n.sunZenith, row = z / n.sunZenith;
+        for (int y = 0; y < packed.y; ++y) {
+            const size_t to = (static_cast<size_t>(z) * packed.y + y) * packed.x * 4;
+            const size_t from = ((static_cast<size_t>(row) * n.viewZenith + y) * scattering.image.width + column * n.height) * 4;
+            std::memcpy(volume.data() + to, scattering.image.halfBits.data() + from, static_cast<size_t>(packed.x) * 8);
+        }
+    }
+    context->UpdateSubresource(tables.tables().singleScattering.texture.Get(), 0, nullptr, volume.data(), static_cast<UINT>(packed.x * 8),
+                               static_cast<UINT>(packed.x * packed.y * 8));
+    tables.markComplete();
+    return {};
+}
+
+}  // namespace firmament

@@ -1,0 +1,81 @@
+// The atmosphere's table cache and --export-luts, from outside: a first run computes and caches
+// the tables and exports them as self-describing EXR files; a corrupted cache file is reported,
+// recomputed and replaced; a later run loads them.
+#include "core/ExrImage.h"
+#include "core/FileIO.h"
+#include "support/Process.h"
+#include "support/TestPaths.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace firmament::test {
+namespace {
+
+ProcessResult runWithCache(const std::filesystem::path& cache, std::vector<std::wstring> extra = {}) {
+    std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", L"32x32", L"--set",
+                                   L"atmosphere.lutResolution=small (8x32x16x8)", L"--cache-dir", cache.wstring()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runProcess(firmamentExe(), args);
+}
+
+std::vector<std::filesystem::path> filesIn(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) files.push_back(entry.path());
+    return files;
+}
+
+TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-table-cache-test";
+    std::filesystem::remove_all(folder);
+    const auto cache = folder / "cache", exported = folder / "exported";
+
+    ProcessResult run = runWithCache(cache, {L"--export-luts", exported.wstring()});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("saved to the cache"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("exported to"), std::string::npos) << run.output;
+    ASSERT_EQ(filesIn(cache).size(), 2u);
+
+    // The exported files describe themselves.
+    const FloatExrFile density = readFloatExr(exported / "net-density.exr");
+    EXPECT_EQ(density.image.width, 128);
+    EXPECT_GT(density.image.rgba[0], 0.0f);
+    const ExrFile scattering = readExr(exported / "single-scattering.exr");
+    EXPECT_EQ(scattering.image.width, 8 * 16);  // altitude x sun zenith tiles
+    EXPECT_EQ(scattering.image.height, 32 * 8);  // view zenith x sun-view tiles
+    for (const char* name : {"firmament.lut.name", "firmament.lut.dimensions", "firmament.lut.layout", "firmament.lut.parameterization",
+                             "firmament.lut.key", "firmament.atmosphere.rayleighScattering", "firmament.atmosphere.earthRadius"})
+        EXPECT_TRUE(scattering.attributes.count(name)) << name;
+    EXPECT_EQ(std::get<std::string>(scattering.attributes.at("firmament.lut.dimensions")),
+              "8 x 32 x 16 x 8 (altitude, view zenith, sun zenith, sun-view)");
+
+    // Corrupt the cached single scattering: reported by name, recomputed, cached again.
+    std::filesystem::path corrupted;
+    for (const auto& file : filesIn(cache))
+        if (file.filename().string().find("single-scattering") != std::string::npos) corrupted = file;
+    ASSERT_FALSE(corrupted.empty());
+    const std::string garbage = "not an EXR file";
+    writeFileBytes(corrupted, std::span(reinterpret_cast<const std::uint8_t*>(garbage.data()), garbage.size()));
+    run = runWithCache(cache);
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("cannot be used"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(corrupted.filename().string()), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("saved to the cache"), std::string::npos) << run.output;
+    EXPECT_NO_THROW(readExr(corrupted));
+
+    run = runWithCache(cache);
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("loaded from the cache"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("pre-computing"), std::string::npos) << run.output;
+
+    // Another resolution is another key: computed, not loaded.
+    run = runWithCache(cache, {L"--set", L"atmosphere.lutResolution=medium (16x64x32x8)"});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("pre-computing"), std::string::npos) << run.output;
+    EXPECT_EQ(filesIn(cache).size(), 4u);
+    std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace firmament::test
