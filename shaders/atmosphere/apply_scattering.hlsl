@@ -5,7 +5,8 @@
 //  - geometry at P: its radiance times T(C -> P), plus the light scattered in between,
 //    L(C, v) - T(C -> P) L(P, v) (eq. 8).
 // Single scattering comes from the table, from numerical integration along the ray (the
-// reference the table is measured against), or not at all.
+// reference the table is measured against), or not at all; the higher orders from the
+// high-order table (unoccluded), or everything from the multiple scattering table (occluded).
 #include "common/fullscreen_triangle.hlsli"
 #include "atmosphere/aerial_perspective.hlsli"
 
@@ -23,26 +24,42 @@ Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before this pa
 Texture2D<float> sceneDepth : register(t1);
 Texture2D<float4> netDensityLut : register(t2);
 Texture3D<float4> singleScatteringLut : register(t3);
+Texture3D<float4> highOrderScatteringLut : register(t4);
+Texture3D<float4> multipleScatteringLut : register(t5);
 SamplerState linearClamp : register(s0);
 
 static const uint kSingleScatteringNone = 0;
 static const uint kSingleScatteringIntegration = 1;
+static const uint kMultipleScatteringNone = 0;
+static const uint kMultipleScatteringOccluded = 1;  // the multiple table alone, single scattering included
 
 FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
     return fullscreenTriangle(vertexId);
 }
 
-// Single scattering per unit irradiance along start -> start + length viewDir.
-float3 inscattering(float3 start, float3 viewDir, float3 sunDir, float rayLength, bool hitsGround, bool toEnd) {
-    if (scattering.mode.x == kSingleScatteringNone) return 0.0;
-    if (scattering.mode.x == kSingleScatteringIntegration)
-        return integrateSingleScattering(atmosphere, netDensityLut, linearClamp, start, viewDir, sunDir, rayLength, (int)scattering.mode.y);
+// The light a table holds between start and start + length viewDir: the whole ray's, or eq. 8.
+float3 tableBetween(Texture3D<float4> lut, float3 start, float3 viewDir, float3 sunDir, float rayLength, bool hitsGround, bool toEnd) {
     int side = hitsGround ? kBelowHorizon : kAboveHorizon;
-    float3 fromStart = lookUpScattering(atmosphere, singleScatteringLut, linearClamp, start, viewDir, sunDir, side);
+    float3 fromStart = lookUpScattering(atmosphere, lut, linearClamp, start, viewDir, sunDir, side);
     if (toEnd) return fromStart;
     float3 end = start + viewDir * rayLength;
-    float3 fromEnd = lookUpScattering(atmosphere, singleScatteringLut, linearClamp, end, viewDir, sunDir, side);
+    float3 fromEnd = lookUpScattering(atmosphere, lut, linearClamp, end, viewDir, sunDir, side);
     return max(fromStart - transmittanceBetween(atmosphere, netDensityLut, linearClamp, start, end, viewDir) * fromEnd, 0.0);
+}
+
+// In-scattered light per unit irradiance along start -> start + length viewDir: single
+// scattering as its mode says, and the higher orders as theirs.
+float3 inscattering(float3 start, float3 viewDir, float3 sunDir, float rayLength, bool hitsGround, bool toEnd) {
+    if (scattering.mode.z == kMultipleScatteringOccluded)
+        return tableBetween(multipleScatteringLut, start, viewDir, sunDir, rayLength, hitsGround, toEnd);
+    float3 light = 0.0;
+    if (scattering.mode.x == kSingleScatteringIntegration)
+        light = integrateSingleScattering(atmosphere, netDensityLut, linearClamp, start, viewDir, sunDir, rayLength, (int)scattering.mode.y);
+    else if (scattering.mode.x != kSingleScatteringNone)
+        light = tableBetween(singleScatteringLut, start, viewDir, sunDir, rayLength, hitsGround, toEnd);
+    if (scattering.mode.z != kMultipleScatteringNone)
+        light += tableBetween(highOrderScatteringLut, start, viewDir, sunDir, rayLength, hitsGround, toEnd);
+    return light;
 }
 
 float4 ps_main(FullscreenVertex input) : SV_Target {
@@ -72,10 +89,13 @@ float4 ps_main(FullscreenVertex input) : SV_Target {
 
     bool hitsGround = rayHitsGround(atmosphere, start, viewDir);
     float toEnd = rayLengthInAtmosphere(atmosphere, start, viewDir, hitsGround);
-    if (geometry && geometryDistance < toEnd) {
-        float3 end = start + viewDir * geometryDistance;
+    if (geometry) {
+        // Geometry on the ground lies where the ray meets the Earth: a comparison would be
+        // decided by rounding pixel by pixel, so the distance is clamped to the ray's end.
+        float distance = min(geometryDistance, toEnd);
+        float3 end = start + viewDir * distance;
         float3 transmittance = transmittanceBetween(atmosphere, netDensityLut, linearClamp, start, end, viewDir);
-        float3 scattered = inscattering(start, viewDir, sunDir, geometryDistance, hitsGround, false);
+        float3 scattered = inscattering(start, viewDir, sunDir, distance, hitsGround, false);
         return float4(radiance * transmittance + frame.sunIrradiance.rgb * scattered, 1.0);
     }
     float3 sky = frame.sunIrradiance.rgb * inscattering(start, viewDir, sunDir, toEnd, hitsGround, true);

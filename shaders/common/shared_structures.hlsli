@@ -43,13 +43,16 @@ struct AtmosphereConstants {
     float4 ozone;               // rgb: ozone absorption at the layer's peak (1/m), zero when off; w: unused
     float4 ozoneLayer;          // x: altitude of the peak; y: half width of the tent; zw: unused
     float4 scatteringLutSize;   // the 4D scattering LUT: altitude, view zenith, sun zenith, sun-view
-    float4 netDensityLutSize;   // xy: the net density LUT: altitude, zenith; zw: unused
+    float4 netDensityLutSize;   // xy: the net density LUT: altitude, zenith; z: ambient light LUT width;
+                                // w: directions on the sphere for the scattering integrals (J, ambient)
 };
 FIRMAMENT_CONSTANT_BUFFER(AtmosphereConstants);
 
 // atmosphere/apply_scattering.hlsl
 struct ScatteringPassConstants {
-    uint4 mode;  // x: single scattering (0 none, 1 integration, 2 table); y: integration steps; zw: unused
+    uint4 mode;  // x: single scattering (0 none, 1 integration, 2 table); y: integration steps;
+                 // z: multiple scattering (0 none, 1 occluded: the multiple table alone, 2 unoccluded:
+                 // single scattering plus the high-order table); w: unused
     float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(ScatteringPassConstants);

@@ -62,13 +62,16 @@ float3 viewDirection(FullscreenVertex input) {
 #if GROUND_ONLY
 float4 ps_main(FullscreenVertex input, out float depth : SV_Depth) : SV_Target {
     float3 direction = viewDirection(input);
-    // The Earth's sphere about (0, -R, 0).
+    // The Earth's sphere about (0, -R, 0): |P + t d|^2 = R^2 with P from the centre. In float,
+    // |P|^2 - R^2 and -b - sqrt(b^2 - c) both lose metres to cancellation (|P| is 6.4e6 m), so
+    // c is expanded from the camera's coordinates and the near root taken as c / (-b + sqrt).
     float radius = frame.planet.x;
-    float3 fromCentre = frame.cameraPosition.xyz + float3(0.0, radius, 0.0);
-    float b = dot(fromCentre, direction);
-    float discriminant = b * b - (dot(fromCentre, fromCentre) - radius * radius);
-    if (discriminant < 0.0) discard;
-    float distance = -b - sqrt(discriminant);
+    float3 camera = frame.cameraPosition.xyz;
+    float b = dot(camera, direction) + radius * direction.y;
+    float c = dot(camera.xz, camera.xz) + camera.y * (2.0 * radius + camera.y);
+    float discriminant = b * b - c;
+    if (discriminant < 0.0 || b >= 0.0) discard;
+    float distance = c / (-b + sqrt(discriminant));
     if (distance <= 0.0) discard;
     float3 ground = frame.cameraPosition.xyz + direction * distance;
     float4 clip = mul(frame.viewProjection, float4(ground, 1.0));

@@ -6,9 +6,9 @@ namespace firmament {
 
 LutDimensions LutDimensions::of(LutResolution resolution) {
     switch (resolution) {
-        case LutResolution::Small: return {8, 32, 16, 8, 128, 128};
-        case LutResolution::Medium: return {16, 64, 32, 8, 512, 512};
-        case LutResolution::Full: return {32, 128, 64, 16, 1024, 1024};
+        case LutResolution::Small: return {8, 32, 16, 8, 128, 128, 64};
+        case LutResolution::Medium: return {16, 64, 32, 8, 512, 512, 256};
+        case LutResolution::Full: return {32, 128, 64, 16, 1024, 1024, 1024};
     }
     return {};
 }
@@ -21,6 +21,7 @@ AtmosphereParameters AtmosphereParameters::from(const AtmosphereSettings& s) {
     p.mieExtinction = p.mieScattering * (1.0 + static_cast<double>(s.aerosolAbsorption));
     p.mieAsymmetry = s.mieAsymmetry;
     p.ozoneAbsorption = s.ozone ? kOzoneAbsorptionAtPeak : glm::dvec3(0.0);
+    p.scatteringOrders = s.scatteringOrders;
     p.lut = LutDimensions::of(s.resolution);
     return p;
 }
@@ -35,7 +36,7 @@ gpu::AtmosphereConstants AtmosphereParameters::constants() const {
     c.ozone = glm::vec4(glm::vec3(ozoneAbsorption), 0.0f);
     c.ozoneLayer = glm::vec4(static_cast<float>(ozoneCentre), static_cast<float>(ozoneHalfWidth), 0.0f, 0.0f);
     c.scatteringLutSize = glm::vec4(lut.height, lut.viewZenith, lut.sunZenith, lut.sunView);
-    c.netDensityLutSize = glm::vec4(lut.netDensityHeight, lut.netDensityZenith, 0.0f, 0.0f);
+    c.netDensityLutSize = glm::vec4(lut.netDensityHeight, lut.netDensityZenith, lut.ambientLight, sphereSamples);
     return c;
 }
 
@@ -59,11 +60,12 @@ std::string AtmosphereParameters::describe() const {
                   "earthRadius=%.17g atmosphereHeight=%.17g rayleighScaleHeight=%.17g mieScaleHeight=%.17g "
                   "rayleighScattering=%.17g,%.17g,%.17g mieScattering=%.17g,%.17g,%.17g mieExtinction=%.17g,%.17g,%.17g "
                   "mieAsymmetry=%.17g ozoneAbsorption=%.17g,%.17g,%.17g ozoneCentre=%.17g ozoneHalfWidth=%.17g "
-                  "lut=%dx%dx%dx%d netDensity=%dx%d",
+                  "lut=%dx%dx%dx%d netDensity=%dx%d ambient=%d orders=%d sphereSamples=%d",
                   earthRadius, atmosphereHeight, rayleighScaleHeight, mieScaleHeight, rayleighScattering.r, rayleighScattering.g,
                   rayleighScattering.b, mieScattering.r, mieScattering.g, mieScattering.b, mieExtinction.r, mieExtinction.g,
                   mieExtinction.b, mieAsymmetry, ozoneAbsorption.r, ozoneAbsorption.g, ozoneAbsorption.b, ozoneCentre,
-                  ozoneHalfWidth, lut.height, lut.viewZenith, lut.sunZenith, lut.sunView, lut.netDensityHeight, lut.netDensityZenith);
+                  ozoneHalfWidth, lut.height, lut.viewZenith, lut.sunZenith, lut.sunView, lut.netDensityHeight, lut.netDensityZenith,
+                  lut.ambientLight, scatteringOrders, sphereSamples);
     return text;
 }
 

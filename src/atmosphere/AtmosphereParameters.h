@@ -22,6 +22,7 @@ struct LutDimensions {
     int sunView = 16;      //   cosine of the angle between view and sun
     int netDensityHeight = 1024;   // 2D net density to the atmosphere top: altitude
     int netDensityZenith = 1024;   //   cosine of the zenith angle
+    int ambientLight = 1024;       // 1D ambient sky light: cosine of the sun zenith angle
 
     static LutDimensions of(LutResolution resolution);
     glm::ivec3 packed3d() const { return {height, viewZenith, sunZenith * sunView}; }  // the 4D table as a 3D texture
@@ -39,6 +40,8 @@ struct AtmosphereParameters {
     glm::dvec3 ozoneAbsorption{0.0};         // 1/m at the layer's peak; zero without ozone
     double ozoneCentre = 25.0e3;             // m: the tent-shaped layer peaks here ...
     double ozoneHalfWidth = 15.0e3;          // m: ... and falls to zero this far above and below
+    int scatteringOrders = 4;                // N: orders 2..N make the high-order table
+    int sphereSamples = 128;                 // directions for J (eq. 1) and the ambient light (eq. 3)
     LutDimensions lut;
 
     static AtmosphereParameters from(const AtmosphereSettings& settings);

@@ -16,13 +16,20 @@ enum class LutResolution { Small, Medium, Full };
 // order is the shader's mode index (shaders/atmosphere/apply_scattering.hlsl).
 enum class SingleScatteringMode { None, Integration, Table };
 inline constexpr std::array<std::string_view, 3> kSingleScatteringModeNames{"None", "Integration", "LUT"};
+// Higher orders (document 000, "Occluded vs unoccluded"): none; occluded, the multiple
+// scattering table alone (single scattering from it too); unoccluded, single scattering as
+// its mode says plus the high-order table.
+enum class MultipleScatteringMode { None, Occluded, Unoccluded };
+inline constexpr std::array<std::string_view, 3> kMultipleScatteringModeNames{"None", "Occluded", "Unoccluded"};
 inline constexpr std::array<std::string_view, 3> kLutResolutionNames{"Small (8x32x16x8)", "Medium (16x64x32x8)",
                                                                      "Full (32x128x64x16)"};
 
 struct AtmosphereSettings {
     bool enabled = true;             // "Enable light scattering": the sky and aerial perspective
     SingleScatteringMode singleScattering = SingleScatteringMode::Table;
+    MultipleScatteringMode multipleScattering = MultipleScatteringMode::Unoccluded;
     int integrationSteps = 30;       // per ray, in the Integration mode
+    int scatteringOrders = 4;        // orders 2..N are pre-computed
     float sunIntensity = 1.0f;       // the sun's irradiance above the atmosphere (relative units)
     float aerosolDensity = 1.0f;     // scales the Mie scattering coefficient
     float aerosolAbsorption = 0.1f;  // Mie extinction = scattering * (1 + this)
@@ -38,7 +45,9 @@ struct AtmosphereSettings {
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable light scattering");
         v.choice("singleScattering", singleScattering, kSingleScatteringModeNames, "Single scattering mode");
+        v.choice("multipleScattering", multipleScattering, kMultipleScatteringModeNames, "Multiple scattering mode");
         v.field("integrationSteps", integrationSteps, {5, 100}, "Num integration steps");
+        v.field("scatteringOrders", scatteringOrders, {1, 10}, "Scattering orders (1: single only)");
         v.field("sunIntensity", sunIntensity, {0.01f, 100.0f, true}, "Sun intensity");
         v.field("aerosolDensity", aerosolDensity, {0.1f, 5.0f}, "Aerosol density");
         v.field("aerosolAbsorption", aerosolAbsorption, {0.0f, 5.0f}, "Aerosol absorption");

@@ -139,6 +139,40 @@ glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 vi
     return total;
 }
 
+ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
+                                                                     int maxOrder, int paths, unsigned seed) const {
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto scattering = [&](glm::dvec3 rho, double cosTheta) {
+        return p_.rayleighScattering * rho.x * rayleighPhase(cosTheta) + p_.mieScattering * rho.y * miePhase(cosTheta, p_.mieAsymmetry);
+    };
+    glm::dvec3 sum(0.0), sumOfSquares(0.0);
+    for (int path = 0; path < paths; ++path) {
+        glm::dvec3 x = start, d = viewDir, throughput(1.0), contribution(0.0);
+        for (int order = 1; order <= maxOrder; ++order) {
+            const double length = rayLength(x, d);
+            if (length <= 0.0) break;
+            const double s = unit(random) * length;  // pdf 1 / length
+            const glm::dvec3 p = x + d * s;
+            const glm::dvec3 rho = density(glm::length(p) - p_.earthRadius);
+            const glm::dvec3 reach = throughput * length * glm::exp(-opticalDepth(netDensity(x, p)));
+            if (order >= 2) contribution += reach * scattering(rho, glm::dot(d, sunDir)) * sunTransmittance(p, sunDir);
+            // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi).
+            const double z = 1.0 - 2.0 * unit(random), phi = 2.0 * 3.14159265358979323846 * unit(random);
+            const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+            const glm::dvec3 w(r * std::cos(phi), z, r * std::sin(phi));
+            throughput = reach * scattering(rho, glm::dot(d, w)) * (4.0 * 3.14159265358979323846);
+            x = p;
+            d = w;
+        }
+        sum += contribution;
+        sumOfSquares += contribution * contribution;
+    }
+    const glm::dvec3 mean = sum / static_cast<double>(paths);
+    const glm::dvec3 variance = glm::max(sumOfSquares / static_cast<double>(paths) - mean * mean, 0.0);
+    return {mean, glm::sqrt(variance / static_cast<double>(paths))};
+}
+
 ReferenceAtmosphere::Ray ReferenceAtmosphere::ray(const ScatteringCoordinates& c) const {
     Ray r;
     r.start = glm::dvec3(0.0, p_.earthRadius + c.altitude, 0.0);

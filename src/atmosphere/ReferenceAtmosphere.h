@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <functional>
+#include <random>
 
 namespace firmament::atmosphere {
 
@@ -41,6 +42,17 @@ public:
     glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround) const;
     glm::dvec3 singleScattering(const ScatteringCoordinates& c) const;
     glm::dvec3 singleScattering(const ScatteringCoordinates& c, bool aboveHorizon) const;
+
+    // Orders 2..maxOrder of scattering (document 000's L^H, the ground black as in the tables),
+    // by Monte Carlo path tracing: each path walks from the camera, a distance along its ray
+    // chosen uniformly, a new direction uniformly over the sphere, and at every vertex takes
+    // the sun's light through one more scattering (next-event estimation). Slow and simple: the
+    // estimate and its standard error.
+    struct Estimate {
+        glm::dvec3 mean, standardError;
+    };
+    Estimate highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int maxOrder, int paths,
+                                 unsigned seed) const;
 
     // A start point and two directions with the given table coordinates (in the x-y plane,
     // the sun towards +z when it is off that plane).

@@ -24,19 +24,21 @@ void ScatteringPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders
 
     atmosphere_.update(context, parameters.constants());
     gpu::ScatteringPassConstants constants{};
-    constants.mode = glm::uvec4(static_cast<unsigned>(settings.singleScattering), static_cast<unsigned>(settings.integrationSteps), 0u, 0u);
+    constants.mode = glm::uvec4(static_cast<unsigned>(settings.singleScattering), static_cast<unsigned>(settings.integrationSteps),
+                                static_cast<unsigned>(settings.multipleScattering), 0u);
     constants.sun = glm::vec4(static_cast<float>(std::cos(kSunAngularRadius)), static_cast<float>(sunDiscRadiance()), 0.0f, 0.0f);
     constants_.update(context, constants);
 
     fullscreen_.bindTarget(context, hdrFrame.rtv.Get(), hdrFrame.width, hdrFrame.height);
     ID3D11Buffer* buffers[3] = {frameConstants, atmosphere_.get(), constants_.get()};
     context->PSSetConstantBuffers(0, 3, buffers);
-    ID3D11ShaderResourceView* inputs[4] = {sceneCopy_.srv.Get(), depth, tables.netDensity.srv.Get(), tables.singleScattering.srv.Get()};
-    context->PSSetShaderResources(0, 4, inputs);
+    ID3D11ShaderResourceView* inputs[6] = {sceneCopy_.srv.Get(),          depth, tables.netDensity.srv.Get(), tables.singleScattering.srv.Get(),
+                                           tables.highOrderScattering.srv.Get(), tables.multipleScattering.srv.Get()};
+    context->PSSetShaderResources(0, 6, inputs);
     context->PSSetSamplers(0, 1, linearClamp_.GetAddressOf());
     fullscreen_.draw(context, shaders, kVertexShader, kPixelShader);
-    ID3D11ShaderResourceView* none[4] = {};
-    context->PSSetShaderResources(0, 4, none);
+    ID3D11ShaderResourceView* none[6] = {};
+    context->PSSetShaderResources(0, 6, none);
 }
 
 }  // namespace firmament

@@ -1,7 +1,11 @@
 #pragma once
 // Fills the atmosphere's look-up tables on the GPU (document 000, frame order step 1):
-//   1. net density to the top of the atmosphere, 2D (shaders/atmosphere/precompute_net_density.hlsl);
-//   2. single scattering, 4D packed into 3D (precompute_single_scattering.hlsl).
+//   1. net density to the top of the atmosphere, 2D (precompute_net_density.hlsl);
+//   2. single scattering L^(1), 4D packed into 3D (precompute_single_scattering.hlsl);
+//   3. for each order n = 2..N: J^(n) over the sphere, then L^(n) along the view rays and the
+//      high-order sum L^H (precompute_multiple_scattering.hlsl);
+//   4. the multiple scattering table L^M = L^(1) + L^H;
+//   5. the ambient sky light, 1D (precompute_ambient_light.hlsl).
 // The work is cut into units (blocks of rows, slabs of z slices) of a fraction of a second each
 // on the WARP device, so that a recompute can run one unit per frame and the window stays
 // responsive; runAll() does everything at once, with progress in the log.
@@ -18,8 +22,11 @@ namespace firmament {
 
 // The tables, as the renderer reads them.
 struct ScatteringTables {
-    Texture2D netDensity;        // R32G32B32A32_FLOAT: (zenith cosine, altitude) -> Rayleigh, Mie, ozone net density
-    Texture3D singleScattering;  // R16G16B16A16_FLOAT: L_in^(1) per unit sun irradiance, packed 4D
+    Texture2D netDensity;           // R32G32B32A32_FLOAT: (zenith cosine, altitude) -> Rayleigh, Mie, ozone net density
+    Texture3D singleScattering;     // R16G16B16A16_FLOAT: L^(1) per unit sun irradiance, packed 4D
+    Texture3D highOrderScattering;  //   L^H = L^(2) + ... + L^(N)
+    Texture3D multipleScattering;   //   L^M = L^(1) + L^H
+    Texture2D ambientLight;         // R16G16B16A16_FLOAT, N x 1: sky irradiance on the ground per unit sun irradiance
 };
 
 class ScatteringPrecomputation {
@@ -33,23 +40,33 @@ public:
 
     bool done() const { return next_ >= units_.size(); }
     // The tables were filled another way (from files): nothing is left to run.
-    void markComplete() { next_ = units_.size(); }
+    void markComplete();
     double progress() const { return units_.empty() ? 1.0 : static_cast<double>(next_) / static_cast<double>(units_.size()); }
-    std::string currentStage() const;  // "net density", "single scattering", or "done"
+    std::string currentStage() const;
 
     const ScatteringTables& tables() const { return tables_; }
     const AtmosphereParameters& parameters() const { return parameters_; }
 
 private:
-    enum class Stage { NetDensity, SingleScattering };
+    enum class Stage { NetDensity, SingleScattering, ScatteredRadiance, ScatteringOrder, Combine, AmbientLight };
     struct Unit {
         Stage stage;
         unsigned first, end;  // rows or z slices
+        int order;            // n, for the multiple scattering stages
     };
     void run(ID3D11DeviceContext* context, ShaderLibrary& shaders, const Unit& unit);
+    void releaseScratch();
 
     AtmosphereParameters parameters_;
     ScatteringTables tables_;
+    // Only while computing: J^(n) (float32: it is too small for half), the orders n - 1 and n,
+    // and the high-order sums before and after order n (ping-pong: UAVs of RGBA16F cannot be
+    // read and written in place).
+    Texture3D scattered_;
+    Texture3D orders_[2];
+    Texture3D highOrders_[2];
+    ComPtr<ID3D11Buffer> sphereDirections_;
+    ComPtr<ID3D11ShaderResourceView> sphereDirectionsView_;
     ConstantBuffer<gpu::AtmosphereConstants> atmosphere_;
     ConstantBuffer<gpu::PrecomputeSliceConstants> slab_;
     ComPtr<ID3D11SamplerState> linearClamp_;
@@ -59,5 +76,9 @@ private:
 
 // The sampler every look-up into the tables uses.
 ComPtr<ID3D11SamplerState> createLinearClampSampler(ID3D11Device* device);
+
+// `count` directions spread evenly over the unit sphere (a spherical Fibonacci set: equal
+// areas, y from 1 - 1/count down to -1 + 1/count): the quadrature points of eq. 1 and 3.
+std::vector<glm::vec4> uniformSphereDirections(int count);
 
 }  // namespace firmament

@@ -12,7 +12,7 @@ namespace firmament {
 
 namespace {
 
-constexpr int kFormatVersion = 1;  // raise when the files' layout changes
+constexpr int kFormatVersion = 2;  // raise when the files' layout changes
 
 // FNV-1a, 64 bits: stable across builds and platforms, unlike std::hash.
 std::uint64_t fnv1a(const void* data, size_t size, std::uint64_t hash) {
@@ -22,7 +22,11 @@ std::uint64_t fnv1a(const void* data, size_t size, std::uint64_t hash) {
 }
 
 const ShaderKey kPrecomputeShaders[] = {{"atmosphere/precompute_net_density.hlsl", "main", "cs_5_0", {}},
-                                        {"atmosphere/precompute_single_scattering.hlsl", "main", "cs_5_0", {}}};
+                                        {"atmosphere/precompute_single_scattering.hlsl", "main", "cs_5_0", {}},
+                                        {"atmosphere/precompute_multiple_scattering.hlsl", "scatteredRadiance", "cs_5_0", {}},
+                                        {"atmosphere/precompute_multiple_scattering.hlsl", "scatteringOrder", "cs_5_0", {}},
+                                        {"atmosphere/precompute_multiple_scattering.hlsl", "combine", "cs_5_0", {}},
+                                        {"atmosphere/precompute_ambient_light.hlsl", "main", "cs_5_0", {}}};
 
 std::string dimensions(const LutDimensions& n) {
     char text[128];
@@ -62,6 +66,55 @@ std::string checkHeader(const ExrAttributes& a, const std::string& key, int widt
     return {};
 }
 
+struct FourDimensionalTable {
+    const Texture3D* texture;
+    const char* file;
+    const char* name;
+};
+
+std::vector<FourDimensionalTable> fourDimensionalTables(const ScatteringTables& t) {
+    return {{&t.singleScattering, "single-scattering.exr", "single scattering L^(1), per unit sun irradiance (1/sr)"},
+            {&t.highOrderScattering, "high-order-scattering.exr", "high-order scattering L^H = L^(2) + ... + L^(N), per unit sun irradiance (1/sr)"},
+            {&t.multipleScattering, "multiple-scattering.exr", "multiple scattering L^M = L^(1) + L^H, per unit sun irradiance (1/sr)"}};
+}
+
+std::string tiledLayout(const LutDimensions& n) {
+    return "tiles of " + std::to_string(n.height) + " x " + std::to_string(n.viewZenith) +
+           " texels: x altitude, y view zenith (rows 0 to N/2-1 below the horizon, from it downwards; rows N/2 to N-1 above it, "
+           "from it up to the zenith). Tile column: sun zenith (" + std::to_string(n.sunZenith) + "), tile row: sun-view angle (" +
+           std::to_string(n.sunView) + "). The GPU's 3D texture is the tiles stacked as z = row * " + std::to_string(n.sunZenith) +
+           " + column.";
+}
+
+// The packed 3D table (half RGBA) as a 2D image of tiles, and back.
+HalfRgbaImage tileVolume(const ReadbackVolume& volume, const LutDimensions& n) {
+    HalfRgbaImage image{n.height * n.sunZenith, n.viewZenith * n.sunView, {}};
+    image.halfBits.resize(static_cast<size_t>(image.width) * image.height * 4);
+    for (int z = 0; z < volume.depth; ++z) {
+        const int column = z % n.sunZenith, row = z / n.sunZenith;
+        for (int y = 0; y < volume.height; ++y) {
+            const size_t from = (static_cast<size_t>(z) * volume.height + y) * volume.width * 8;
+            const size_t to = ((static_cast<size_t>(row) * n.viewZenith + y) * image.width + column * n.height) * 4;
+            std::memcpy(image.halfBits.data() + to, volume.bytes.data() + from, static_cast<size_t>(volume.width) * 8);
+        }
+    }
+    return image;
+}
+
+std::vector<std::uint16_t> untileVolume(const HalfRgbaImage& image, const LutDimensions& n) {
+    const glm::ivec3 packed = n.packed3d();
+    std::vector<std::uint16_t> volume(static_cast<size_t>(packed.x) * packed.y * packed.z * 4);
+    for (int z = 0; z < packed.z; ++z) {
+        const int column = z % n.sunZenith, row = z / n.sunZenith;
+        for (int y = 0; y < packed.y; ++y) {
+            const size_t to = (static_cast<size_t>(z) * packed.y + y) * packed.x * 4;
+            const size_t from = ((static_cast<size_t>(row) * n.viewZenith + y) * image.width + column * n.height) * 4;
+            std::memcpy(volume.data() + to, image.halfBits.data() + from, static_cast<size_t>(packed.x) * 8);
+        }
+    }
+    return volume;
+}
+
 }  // namespace
 
 std::string scatteringTableKey(const AtmosphereParameters& parameters, ShaderLibrary& shaders) {
@@ -98,66 +151,63 @@ void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, c
         "layer's peak density for B). Rays that meet the ground hold the grazing ray's value.");
     writeAtomically(folder / (prefix + "net-density.exr"), densityImage, a);
 
-    // Single scattering: each z slice (sun-view s, sun zenith z) is a tile at column z, row s.
-    const ReadbackVolume volume = readTexture3D(device, context, tables.tables().singleScattering.texture.Get());
-    HalfRgbaImage scatteringImage{n.height * n.sunZenith, n.viewZenith * n.sunView, {}};
-    scatteringImage.halfBits.resize(static_cast<size_t>(scatteringImage.width) * scatteringImage.height * 4);
-    for (int z = 0; z < volume.depth; ++z) {
-        const int column = z % n.sunZenith, row = z / n.sunZenith;
-        for (int y = 0; y < volume.height; ++y) {
-            const size_t from = (static_cast<size_t>(z) * volume.height + y) * volume.width * 8;
-            const size_t to = ((static_cast<size_t>(row) * n.viewZenith + y) * scatteringImage.width + column * n.height) * 4;
-            std::memcpy(scatteringImage.halfBits.data() + to, volume.bytes.data() + from, static_cast<size_t>(volume.width) * 8);
-        }
+    for (const FourDimensionalTable& table : fourDimensionalTables(tables.tables())) {
+        a = commonAttributes(p, key);
+        a["firmament.lut.name"] = std::string(table.name);
+        a["firmament.lut.dimensions"] = dimensions(n);
+        a["firmament.lut.layout"] = tiledLayout(n);
+        writeAtomically(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n), a);
     }
+
+    const ReadbackImage ambient = readTexture2D(device, context, tables.tables().ambientLight.texture.Get());
+    HalfRgbaImage ambientImage{ambient.width, 1, std::vector<std::uint16_t>(ambient.bytes.size() / 2)};
+    std::memcpy(ambientImage.halfBits.data(), ambient.bytes.data(), ambient.bytes.size());
     a = commonAttributes(p, key);
-    a["firmament.lut.name"] = std::string("single scattering L_in^(1), per unit sun irradiance (1/sr)");
-    a["firmament.lut.dimensions"] = dimensions(n);
-    a["firmament.lut.layout"] = std::string(
-        "tiles of " + std::to_string(n.height) + " x " + std::to_string(n.viewZenith) +
-        " texels: x altitude, y view zenith (rows 0 to N/2-1 below the horizon, from it downwards; rows N/2 to N-1 above it, "
-        "from it up to the zenith). Tile column: sun zenith (" + std::to_string(n.sunZenith) + "), tile row: sun-view angle (" +
-        std::to_string(n.sunView) + "). The GPU's 3D texture is the tiles stacked as z = row * " + std::to_string(n.sunZenith) +
-        " + column.");
-    writeAtomically(folder / (prefix + "single-scattering.exr"), scatteringImage, a);
+    a["firmament.lut.name"] = std::string("ambient sky light: irradiance of the whole sky on a horizontal surface on the ground, per unit sun irradiance");
+    a["firmament.lut.dimensions"] = std::to_string(n.ambientLight) + " (sun zenith)";
+    a["firmament.lut.layout"] = std::string("x: cosine of the sun's zenith angle, -1 to 1 at texel centres (document 000, eq. 3)");
+    writeAtomically(folder / (prefix + "ambient-light.exr"), ambientImage, a);
 }
 
 std::string readScatteringTables(ID3D11DeviceContext* context, ScatteringPrecomputation& tables, const std::string& key,
                                  const std::filesystem::path& folder, const std::string& prefix) {
     const LutDimensions& n = tables.parameters().lut;
-    const auto densityPath = folder / (prefix + "net-density.exr"), scatteringPath = folder / (prefix + "single-scattering.exr");
+    const auto densityPath = folder / (prefix + "net-density.exr"), ambientPath = folder / (prefix + "ambient-light.exr");
     std::error_code ec;
-    if (!std::filesystem::exists(densityPath, ec) && !std::filesystem::exists(scatteringPath, ec)) return "missing";
+    if (!std::filesystem::exists(densityPath, ec)) return "missing";
+    // Read and check everything before changing any texture.
     FloatExrFile density;
-    ExrFile scattering;
+    ExrFile ambient;
+    std::vector<ExrFile> fourD;
+    const auto tableList = fourDimensionalTables(tables.tables());
     try {
         density = readFloatExr(densityPath);
-        scattering = readExr(scatteringPath);
+        for (const FourDimensionalTable& table : tableList) fourD.push_back(readExr(folder / (prefix + table.file)));
+        ambient = readExr(ambientPath);
     } catch (const Error& e) {
         return e.what();
     }
     if (auto why = checkHeader(density.attributes, key, n.netDensityZenith, n.netDensityHeight, density.image.width, density.image.height);
         !why.empty())
         return densityPath.string() + ": " + why;
-    if (auto why = checkHeader(scattering.attributes, key, n.height * n.sunZenith, n.viewZenith * n.sunView, scattering.image.width,
-                               scattering.image.height);
-        !why.empty())
-        return scatteringPath.string() + ": " + why;
+    for (size_t i = 0; i < tableList.size(); ++i)
+        if (auto why = checkHeader(fourD[i].attributes, key, n.height * n.sunZenith, n.viewZenith * n.sunView, fourD[i].image.width,
+                                   fourD[i].image.height);
+            !why.empty())
+            return (folder / (prefix + tableList[i].file)).string() + ": " + why;
+    if (auto why = checkHeader(ambient.attributes, key, n.ambientLight, 1, ambient.image.width, ambient.image.height); !why.empty())
+        return ambientPath.string() + ": " + why;
 
     context->UpdateSubresource(tables.tables().netDensity.texture.Get(), 0, nullptr, density.image.rgba.data(),
                                static_cast<UINT>(density.image.width * 16), 0);
     const glm::ivec3 packed = n.packed3d();
-    std::vector<std::uint16_t> volume(static_cast<size_t>(packed.x) * packed.y * packed.z * 4);
-    for (int z = 0; z < packed.z; ++z) {
-        const int column = z % n.sunZenith, row = z / n.sunZenith;
-        for (int y = 0; y < packed.y; ++y) {
-            const size_t to = (static_cast<size_t>(z) * packed.y + y) * packed.x * 4;
-            const size_t from = ((static_cast<size_t>(row) * n.viewZenith + y) * scattering.image.width + column * n.height) * 4;
-            std::memcpy(volume.data() + to, scattering.image.halfBits.data() + from, static_cast<size_t>(packed.x) * 8);
-        }
+    for (size_t i = 0; i < tableList.size(); ++i) {
+        const auto volume = untileVolume(fourD[i].image, n);
+        context->UpdateSubresource(tableList[i].texture->texture.Get(), 0, nullptr, volume.data(), static_cast<UINT>(packed.x * 8),
+                                   static_cast<UINT>(packed.x * packed.y * 8));
     }
-    context->UpdateSubresource(tables.tables().singleScattering.texture.Get(), 0, nullptr, volume.data(), static_cast<UINT>(packed.x * 8),
-                               static_cast<UINT>(packed.x * packed.y * 8));
+    context->UpdateSubresource(tables.tables().ambientLight.texture.Get(), 0, nullptr, ambient.image.halfBits.data(),
+                               static_cast<UINT>(ambient.image.width * 8), 0);
     tables.markComplete();
     return {};
 }

@@ -1,5 +1,5 @@
 // The sky in frames firmament.exe captures, against the CPU reference model: single
-// scattering along each sampled pixel's view ray, times the sun's intensity, for the sun high,
+// scattering (multiple scattering off) along each sampled pixel's view ray, times the sun's intensity, for the sun high,
 // low, at the horizon and below it (twilight). The EXR header gives the camera; the pixels'
 // view rays are rebuilt from its matrices as the program builds them.
 #include "atmosphere/ReferenceAtmosphere.h"
@@ -38,7 +38,8 @@ TEST_P(SkyCapture, SkyRadianceMatchesTheReference) {
         firmamentExe(), {L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
                          L"--set", L"scene.orientationGrid=off", L"--set", L"camera.position=0," + std::to_wstring(kAltitude) + L",0",
                          L"--set", L"camera.pitch=35", L"--set", L"camera.fieldOfView=70", L"--set", L"sun.elevation=" + elevation,
-                         L"--set", L"sun.azimuth=20", L"--set", L"atmosphere.sunIntensity=2", L"--capture",
+                         L"--set", L"sun.azimuth=20", L"--set", L"atmosphere.sunIntensity=2", L"--set", L"atmosphere.multipleScattering=none",
+                         L"--set", L"atmosphere.scatteringOrders=1", L"--capture",
                          (folder / "sky.png").wstring()});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     const ExrFile file = readExr(folder / "sky.exr");
