@@ -20,26 +20,13 @@ SamplerState linearClamp : register(s0);
 
 static const int kOrderIntegrationSteps = 64;
 
-// The ray of a texel, as in precompute_single_scattering.hlsl.
-struct TexelRay {
-    float3 start, viewDir, sunDir;
-    bool belowHorizon;
-    float altitude;
-};
-
+// This dispatch's texel's ray (TexelRay, scattering_parameterization.hlsli); false outside the slab.
 bool texelRay(uint3 id, out TexelRay ray) {
     uint3 texel = id + uint3(0, 0, slab.range.x);
     float4 n = atmosphere.scatteringLutSize;
     ray = (TexelRay)0;
     if (texel.x >= (uint)n.x || texel.y >= (uint)n.y || texel.z >= slab.range.y) return false;
-    ScatteringSample s = texelToWorld(atmosphere, texel);
-    ray.altitude = s.altitude;
-    ray.start = float3(0.0, atmosphere.earth.x + s.altitude, 0.0);
-    float sinView = sqrt(saturate(1.0 - s.cosView * s.cosView));
-    ray.viewDir = float3(sinView, s.cosView, 0.0);
-    float sunX = sinView > 1e-6 ? (s.cosSunView - s.cosView * s.cosSun) / sinView : 0.0;
-    ray.sunDir = float3(sunX, s.cosSun, sqrt(saturate(1.0 - sunX * sunX - s.cosSun * s.cosSun)));
-    ray.belowHorizon = texel.y < (uint)n.y / 2;
+    ray = texelRay(atmosphere, texel);
     return true;
 }
 

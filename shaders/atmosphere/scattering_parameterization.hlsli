@@ -78,6 +78,29 @@ ScatteringSample texelToWorld(AtmosphereConstants a, uint3 texel) {
     return s;
 }
 
+// The ray a texel stands for, in a frame where the start is straight above the Earth's centre
+// and the view turns in the x-y plane: the start (relative to the centre), the view and sun
+// directions (the sun's x from cos(sun-view) = v . l), and which half of the view zenith axis
+// the texel is in (the lower half: the ray ends on the ground).
+struct TexelRay {
+    float altitude;
+    float3 start, viewDir, sunDir;
+    bool belowHorizon;
+};
+
+TexelRay texelRay(AtmosphereConstants a, uint3 texel) {
+    ScatteringSample s = texelToWorld(a, texel);
+    TexelRay ray;
+    ray.altitude = s.altitude;
+    ray.start = float3(0.0, a.earth.x + s.altitude, 0.0);
+    float sinView = sqrt(saturate(1.0 - s.cosView * s.cosView));
+    ray.viewDir = float3(sinView, s.cosView, 0.0);
+    float sunX = sinView > 1e-6 ? (s.cosSunView - s.cosView * s.cosSun) / sinView : 0.0;
+    ray.sunDir = float3(sunX, s.cosSun, sqrt(saturate(1.0 - sunX * sunX - s.cosSun * s.cosSun)));
+    ray.belowHorizon = texel.y < (uint)a.scatteringLutSize.y / 2;
+    return ray;
+}
+
 // Unit coordinate x to the texture coordinate of the texel-centre grid of n texels.
 float unitToTexture(float x, float n) { return (0.5 + x * (n - 1.0)) / n; }
 
