@@ -4,6 +4,7 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "core/Log.h"
+#include "atmosphere/SunAnimation.h"
 #include "core/SettingsJson.h"
 #include "gpu/PrecompiledShaders.h"
 #include "gpu/SourceShaderCompilers.h"
@@ -272,6 +273,7 @@ void App::update() {
         state_.sun = view.sun;
     } else {
         fly(state_.camera, state_.sun, state_.flight, input, dt);
+        if (state_.atmosphere.animateSun) animateSun(state_.sun, dt);
     }
     constexpr double kRecordPeriodSeconds = 0.1;
     if (options_.recordFlight && (recording_.size() == 0 || now >= recording_.duration() + kRecordPeriodSeconds))

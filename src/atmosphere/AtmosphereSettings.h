@@ -40,6 +40,7 @@ struct AtmosphereSettings {
     glm::vec3 rayleighColour{0.145015f, 0.337539f, 0.827619f};
     glm::vec3 mieColour{1.0f, 1.0f, 1.0f};
     bool ozone = false;              // an absorbing ozone layer (Bruneton 2017), beyond document 000
+    bool animateSun = false;         // the sun turns about the x axis (SunAnimation.h)
     LutResolution resolution = LutResolution::Full;
 
     void visit(SettingsVisitor& v) {
@@ -56,6 +57,7 @@ struct AtmosphereSettings {
         v.colour("rayleighColour", rayleighColour, "Rayleigh colour");
         v.colour("mieColour", mieColour, "Mie colour");
         v.field("ozone", ozone, "Ozone layer");
+        v.field("animateSun", animateSun, "Animate sun");
         v.choice("lutResolution", resolution, kLutResolutionNames, "LUT resolution");
     }
 };

@@ -39,7 +39,7 @@ void basicPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRe
 void additionalPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRequests& requests) {
     ImGui::SeparatorText("Atmosphere");
     editSection(section(sections, "atmosphere"), {"singleScattering", "multipleScattering", "integrationSteps", "scatteringOrders", "aerosolDensity", "aerosolAbsorption",
-                                                   "mieAsymmetry", "customCoefficients", "ozone", "lutResolution"});
+                                                   "mieAsymmetry", "customCoefficients", "ozone", "lutResolution", "animateSun"});
     if (m.state.atmosphere.customCoefficients) editSection(section(sections, "atmosphere"), {"rayleighColour", "mieColour"});
     atmosphereProgress(m);
     ImGui::SeparatorText("Camera");
