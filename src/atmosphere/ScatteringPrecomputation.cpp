@@ -56,23 +56,14 @@ std::vector<glm::vec4> uniformSphereDirections(int count) {
 }
 
 ScatteringPrecomputation::ScatteringPrecomputation(ID3D11Device* device, const AtmosphereParameters& parameters)
-    : parameters_(parameters), atmosphere_(device), slab_(device), linearClamp_(createLinearClampSampler(device)) {
+    : device_(device), parameters_(parameters), atmosphere_(device), slab_(device), linearClamp_(createLinearClampSampler(device)) {
     const LutDimensions& n = parameters_.lut;
     const glm::ivec3 packed = n.packed3d();
     tables_.netDensity = createColorTexture(device, n.netDensityZenith, n.netDensityHeight, DXGI_FORMAT_R32G32B32A32_FLOAT, kReadWrite);
     tables_.singleScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
     tables_.multipleScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
     tables_.ambientLight = createColorTexture(device, n.ambientLight, 1, kTableFormat, kReadWrite);
-    for (auto& texture : highOrders_) texture = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
-    // The high-order sum ends in the texture the last order writes (order 1 only: the cleared one).
-    const int last = parameters_.scatteringOrders;
-    tables_.highOrderScattering = highOrders_[last >= 2 ? (last + 1) % 2 : 0];
-    if (parameters_.scatteringOrders >= 2) {
-        // J is radiance per metre, about 1e-7 in these units: below half float's normal range
-        // (6e-5), where it would keep one or two bits. Float32 holds it.
-        scattered_ = createTexture3D(device, packed.x, packed.y, packed.z, DXGI_FORMAT_R32G32B32A32_FLOAT, kReadWrite);
-        for (auto& texture : orders_) texture = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
-    }
+    tables_.highOrderScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
     const auto directions = uniformSphereDirections(parameters_.sphereSamples);
     D3D11_BUFFER_DESC desc{};
     desc.ByteWidth = static_cast<UINT>(directions.size() * sizeof(glm::vec4));
@@ -96,6 +87,22 @@ ScatteringPrecomputation::ScatteringPrecomputation(ID3D11Device* device, const A
     }
     slabs(Stage::Combine, depth, depth, parameters_.scatteringOrders);
     units_.push_back({Stage::AmbientLight, 0, 1, 0});
+}
+
+// The textures only computing needs, made on the first unit of work: tables loaded from files
+// never need them. The high-order sum ends in the texture the last order writes, which is the
+// table itself (order 1 only: the cleared one).
+void ScatteringPrecomputation::allocateScratch() {
+    const glm::ivec3 packed = parameters_.lut.packed3d();
+    const int last = parameters_.scatteringOrders;
+    const int result = last >= 2 ? (last + 1) % 2 : 0;
+    highOrders_[result] = tables_.highOrderScattering;
+    if (last < 2) return;
+    highOrders_[1 - result] = createTexture3D(device_, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
+    // J is radiance per metre, about 1e-7 in these units: below half float's normal range
+    // (6e-5), where it would keep one or two bits. Float32 holds it.
+    scattered_ = createTexture3D(device_, packed.x, packed.y, packed.z, DXGI_FORMAT_R32G32B32A32_FLOAT, kReadWrite);
+    for (auto& texture : orders_) texture = createTexture3D(device_, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
 }
 
 void ScatteringPrecomputation::markComplete() {
@@ -188,6 +195,7 @@ void ScatteringPrecomputation::run(ID3D11DeviceContext* context, ShaderLibrary& 
 
 bool ScatteringPrecomputation::step(ID3D11DeviceContext* context, ShaderLibrary& shaders) {
     if (done()) return false;
+    if (next_ == 0) allocateScratch();
     run(context, shaders, units_[next_++]);
     if (done()) releaseScratch();
     return true;

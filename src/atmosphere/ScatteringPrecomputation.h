@@ -55,13 +55,16 @@ private:
         int order;            // n, for the multiple scattering stages
     };
     void run(ID3D11DeviceContext* context, ShaderLibrary& shaders, const Unit& unit);
+    void allocateScratch();
     void releaseScratch();
 
+    ID3D11Device* device_;
     AtmosphereParameters parameters_;
     ScatteringTables tables_;
-    // Only while computing: J^(n) (float32: it is too small for half), the orders n - 1 and n,
-    // and the high-order sums before and after order n (ping-pong: UAVs of RGBA16F cannot be
-    // read and written in place).
+    // Only while computing (made by the first step, released by the last): J^(n) (float32: it
+    // is too small for half), the orders n - 1 and n, and the high-order sums before and after
+    // order n (ping-pong: UAVs of RGBA16F cannot be read and written in place; one of the two
+    // is the high-order table itself).
     Texture3D scattered_;
     Texture3D orders_[2];
     Texture3D highOrders_[2];
