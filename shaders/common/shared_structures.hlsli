@@ -57,6 +57,23 @@ struct ScatteringPassConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(ScatteringPassConstants);
 
+// atmosphere/bruneton/*: Bruneton and Neyret 2008's tables (src/atmosphere/bruneton).
+struct BrunetonConstants {
+    float4 transmittanceSize;  // xy: transmittance table, zenith cosines (columns) and radii (rows); zw: unused
+    float4 irradianceSize;     // xy: irradiance table, sun zenith cosines (columns) and radii (rows); zw: unused
+    float4 inscatterSize;      // the 4D in-scatter table: x radii, y view zenith, z sun zenith, w sun-view
+    float4 ground;             // x: the ground's average albedo; y: the scattering order being computed; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(BrunetonConstants);
+
+// atmosphere/bruneton/render.hlsl
+struct BrunetonPassConstants {
+    uint4 view;  // x: 0 the whole frame, 1 only columns >= y (the split view's right side), 2 the
+                 // difference |this - the frame already drawn|; y: the split's first column; zw: unused
+    float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(BrunetonPassConstants);
+
 // atmosphere/precompute_*.hlsl: the part of a table one dispatch fills.
 struct PrecomputeSliceConstants {
     uint4 range;  // x: first z slice; y: one past the last; zw: unused

@@ -311,7 +311,7 @@ void App::renderFrame(bool drawGui) {
     // Headless runs compute the atmosphere's tables before their first frame; a window spreads
     // the work over frames and shows the grid's own sky until the tables are ready.
     if (state_.atmosphere.enabled) atmosphere_.update(context, shaders_, profiler_, state_.atmosphere, options_.headless);
-    const bool scattering = state_.atmosphere.enabled && atmosphere_.ready();
+    const bool scattering = state_.atmosphere.enabled && atmosphere_.ready(state_.atmosphere);
     if (state_.scene.orientationGrid) {
         auto pass = profiler_.scope("Orientation grid");
         if (scattering)
@@ -357,7 +357,7 @@ void App::captureFrame() {
     d.adapter = device_.describe();
     d.frame = static_cast<int>(timer_.frameCount());
     d.techniques = toneMapping_.captureAttributes(device, context, state_.toneMapping);
-    if (state_.atmosphere.enabled) d.techniques.merge(atmosphere_.captureAttributes());
+    if (state_.atmosphere.enabled) d.techniques.merge(atmosphere_.captureAttributes(state_.atmosphere));
     writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, hdrFrame_.texture.Get()), d);
     log::info("captured " + options_.capturePng().string() + " and " + options_.captureExr().string());

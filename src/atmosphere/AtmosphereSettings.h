@@ -12,6 +12,14 @@
 namespace firmament {
 
 enum class LutResolution { Small, Medium, Full };
+// Which model draws the atmosphere: Yusov's update of Intel's sample (document 000), or
+// Bruneton and Neyret's 2008 model (document 002), from the same physical parameters.
+enum class AtmosphereModel { Yusov2013, Bruneton2008 };
+inline constexpr std::array<std::string_view, 2> kAtmosphereModelNames{"Yusov 2013", "Bruneton 2008"};
+// Both models at once: Yusov's on the left half and Bruneton's on the right (Split), or the
+// absolute difference of their radiance (Difference), which tone mapping then shows.
+enum class ModelComparison { None, Split, Difference };
+inline constexpr std::array<std::string_view, 3> kModelComparisonNames{"None", "Split", "Difference"};
 // Where single scattering comes from at render time (document 000's Additional panel); the
 // order is the shader's mode index (shaders/atmosphere/apply_scattering.hlsl).
 enum class SingleScatteringMode { None, Integration, Table };
@@ -26,6 +34,9 @@ inline constexpr std::array<std::string_view, 3> kLutResolutionNames{"Small (8x3
 
 struct AtmosphereSettings {
     bool enabled = true;             // "Enable light scattering": the sky and aerial perspective
+    AtmosphereModel model = AtmosphereModel::Yusov2013;
+    ModelComparison comparison = ModelComparison::None;
+    float groundAlbedo = 0.1f;       // Bruneton's model: the ground's average reflectance (its bounce and its colour)
     SingleScatteringMode singleScattering = SingleScatteringMode::Table;
     MultipleScatteringMode multipleScattering = MultipleScatteringMode::Unoccluded;
     int integrationSteps = 30;       // per ray, in the Integration mode
@@ -45,6 +56,9 @@ struct AtmosphereSettings {
 
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable light scattering");
+        v.choice("model", model, kAtmosphereModelNames, "Atmosphere model");
+        v.choice("comparison", comparison, kModelComparisonNames, "Compare models");
+        v.field("groundAlbedo", groundAlbedo, {0.0f, 1.0f}, "Ground albedo (Bruneton)");
         v.choice("singleScattering", singleScattering, kSingleScatteringModeNames, "Single scattering mode");
         v.choice("multipleScattering", multipleScattering, kMultipleScatteringModeNames, "Multiple scattering mode");
         v.field("integrationSteps", integrationSteps, {5, 100}, "Num integration steps");

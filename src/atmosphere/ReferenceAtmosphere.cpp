@@ -139,6 +139,23 @@ glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 vi
     return total;
 }
 
+double ReferenceAtmosphere::sampleByDensity(glm::dvec3 start, glm::dvec3 dir, double length, double u1, double u2, double& pdf) const {
+    constexpr int kBins = 256;
+    const double width = length / kBins;
+    std::array<double, kBins> cumulative{};
+    double total = 0.0;
+    for (int i = 0; i < kBins; ++i) {
+        const glm::dvec3 rho = density(glm::length(start + dir * ((i + 0.5) * width)) - p_.earthRadius);
+        total += rho.x + rho.y;
+        cumulative[static_cast<size_t>(i)] = total;
+    }
+    const auto bin = std::min<size_t>(static_cast<size_t>(std::lower_bound(cumulative.begin(), cumulative.end(), u1 * total) - cumulative.begin()),
+                                      kBins - 1);
+    const double weight = cumulative[bin] - (bin > 0 ? cumulative[bin - 1] : 0.0);
+    pdf = weight / total / width;
+    return (static_cast<double>(bin) + u2) * width;
+}
+
 ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
                                                                      int maxOrder, int paths, unsigned seed) const {
     std::mt19937_64 random(seed);
@@ -152,10 +169,12 @@ ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec
         for (int order = 1; order <= maxOrder; ++order) {
             const double length = rayLength(x, d);
             if (length <= 0.0) break;
-            const double s = unit(random) * length;  // pdf 1 / length
+            // The distance, in proportion to the density of scatterers along the segment.
+            double pdf = 0.0;
+            const double s = sampleByDensity(x, d, length, unit(random), unit(random), pdf);
             const glm::dvec3 p = x + d * s;
             const glm::dvec3 rho = density(glm::length(p) - p_.earthRadius);
-            const glm::dvec3 reach = throughput * length * glm::exp(-opticalDepth(netDensity(x, p)));
+            const glm::dvec3 reach = throughput / pdf * glm::exp(-opticalDepth(netDensity(x, p)));
             if (order >= 2) contribution += reach * scattering(rho, glm::dot(d, sunDir)) * sunTransmittance(p, sunDir);
             // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi).
             const double z = 1.0 - 2.0 * unit(random), phi = 2.0 * 3.14159265358979323846 * unit(random);

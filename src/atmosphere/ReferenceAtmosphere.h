@@ -45,14 +45,21 @@ public:
 
     // Orders 2..maxOrder of scattering (document 000's L^H, the ground black as in the tables),
     // by Monte Carlo path tracing: each path walks from the camera, a distance along its ray
-    // chosen uniformly, a new direction uniformly over the sphere, and at every vertex takes
-    // the sun's light through one more scattering (next-event estimation). Slow and simple: the
-    // estimate and its standard error.
+    // chosen in proportion to the density of scatterers (sampleByDensity), a new direction
+    // uniformly over the sphere, and at every vertex takes the sun's light through one more
+    // scattering (next-event estimation). Slow and simple: the estimate and its standard error.
     struct Estimate {
         glm::dvec3 mean, standardError;
     };
     Estimate highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int maxOrder, int paths,
                                  unsigned seed) const;
+
+    // A distance along start + s dir, s in [0, length], drawn from two uniform numbers with a
+    // probability density proportional to the density of air plus aerosols (piecewise constant
+    // over 256 equal bins); `pdf` is its density. Along a long grazing ray the scatterers sit in
+    // a few kilometres of it: drawn uniformly, as at first, the estimate is heavy-tailed and
+    // its error bar unreliable.
+    double sampleByDensity(glm::dvec3 start, glm::dvec3 dir, double length, double u1, double u2, double& pdf) const;
 
     // A start point and two directions with the given table coordinates (in the x-y plane,
     // the sun towards +z when it is off that plane).

@@ -13,14 +13,11 @@ constexpr double kPi = 3.14159265358979323846;
 double ScatteringPass::sunDiscRadiance() { return 1.0 / (2.0 * kPi * (1.0 - std::cos(kSunAngularRadius))); }
 
 ScatteringPass::ScatteringPass(ID3D11Device* device)
-    : device_(device), fullscreen_(device), atmosphere_(device), constants_(device), linearClamp_(createLinearClampSampler(device)) {}
+    : fullscreen_(device), atmosphere_(device), constants_(device), linearClamp_(createLinearClampSampler(device)) {}
 
 void ScatteringPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
                             const AtmosphereParameters& parameters, const ScatteringTables& tables, ID3D11Buffer* frameConstants,
-                            const Texture2D& hdrFrame, ID3D11ShaderResourceView* depth) {
-    if (sceneCopy_.width != hdrFrame.width || sceneCopy_.height != hdrFrame.height)
-        sceneCopy_ = createColorTexture(device_, hdrFrame.width, hdrFrame.height, hdrFrame.format, D3D11_BIND_SHADER_RESOURCE);
-    context->CopyResource(sceneCopy_.texture.Get(), hdrFrame.texture.Get());
+                            ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target) {
 
     atmosphere_.update(context, parameters.constants());
     gpu::ScatteringPassConstants constants{};
@@ -29,10 +26,10 @@ void ScatteringPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders
     constants.sun = glm::vec4(static_cast<float>(std::cos(kSunAngularRadius)), static_cast<float>(sunDiscRadiance()), 0.0f, 0.0f);
     constants_.update(context, constants);
 
-    fullscreen_.bindTarget(context, hdrFrame.rtv.Get(), hdrFrame.width, hdrFrame.height);
+    fullscreen_.bindTarget(context, target.rtv.Get(), target.width, target.height);
     ID3D11Buffer* buffers[3] = {frameConstants, atmosphere_.get(), constants_.get()};
     context->PSSetConstantBuffers(0, 3, buffers);
-    ID3D11ShaderResourceView* inputs[6] = {sceneCopy_.srv.Get(),          depth, tables.netDensity.srv.Get(), tables.singleScattering.srv.Get(),
+    ID3D11ShaderResourceView* inputs[6] = {sceneRadiance,          depth, tables.netDensity.srv.Get(), tables.singleScattering.srv.Get(),
                                            tables.highOrderScattering.srv.Get(), tables.multipleScattering.srv.Get()};
     context->PSSetShaderResources(0, 6, inputs);
     context->PSSetSamplers(0, 1, linearClamp_.GetAddressOf());

@@ -17,19 +17,17 @@ public:
 
     void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
                 const AtmosphereParameters& parameters, const ScatteringTables& tables, ID3D11Buffer* frameConstants,
-                const Texture2D& hdrFrame, ID3D11ShaderResourceView* depth);
+                ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target);
 
     // The sun's disc: angular radius and radiance per unit irradiance (1 / its solid angle).
     static constexpr double kSunAngularRadius = 0.00465;  // radians: 0.2666 degrees, as seen from the Earth
     static double sunDiscRadiance();
 
 private:
-    ID3D11Device* device_;
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::AtmosphereConstants> atmosphere_;
     ConstantBuffer<gpu::ScatteringPassConstants> constants_;
     ComPtr<ID3D11SamplerState> linearClamp_;
-    Texture2D sceneCopy_;
 };
 
 }  // namespace firmament

@@ -4,7 +4,6 @@
 #include "gpu/Hresult.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -33,28 +32,6 @@ constexpr UINT kReadWrite = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_AC
 unsigned groups(unsigned count, unsigned size) { return (count + size - 1) / size; }
 }  // namespace
 
-ComPtr<ID3D11SamplerState> createLinearClampSampler(ID3D11Device* device) {
-    D3D11_SAMPLER_DESC desc{};
-    desc.Filter = D3D11_FILTER_MIN_MAG_MIP_LINEAR;
-    desc.AddressU = desc.AddressV = desc.AddressW = D3D11_TEXTURE_ADDRESS_CLAMP;
-    desc.MaxLOD = D3D11_FLOAT32_MAX;
-    ComPtr<ID3D11SamplerState> sampler;
-    check(device->CreateSamplerState(&desc, &sampler), "CreateSamplerState (linear clamp)");
-    return sampler;
-}
-
-std::vector<glm::vec4> uniformSphereDirections(int count) {
-    const double goldenAngle = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
-    std::vector<glm::vec4> directions;
-    for (int i = 0; i < count; ++i) {
-        const double y = 1.0 - (2.0 * i + 1.0) / count;
-        const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
-        directions.emplace_back(static_cast<float>(r * std::cos(goldenAngle * i)), static_cast<float>(y),
-                                static_cast<float>(r * std::sin(goldenAngle * i)), 0.0f);
-    }
-    return directions;
-}
-
 ScatteringPrecomputation::ScatteringPrecomputation(ID3D11Device* device, const AtmosphereParameters& parameters)
     : device_(device), parameters_(parameters), atmosphere_(device), slab_(device), linearClamp_(createLinearClampSampler(device)) {
     const LutDimensions& n = parameters_.lut;
@@ -64,16 +41,7 @@ ScatteringPrecomputation::ScatteringPrecomputation(ID3D11Device* device, const A
     tables_.multipleScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
     tables_.ambientLight = createColorTexture(device, n.ambientLight, 1, kTableFormat, kReadWrite);
     tables_.highOrderScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
-    const auto directions = uniformSphereDirections(parameters_.sphereSamples);
-    D3D11_BUFFER_DESC desc{};
-    desc.ByteWidth = static_cast<UINT>(directions.size() * sizeof(glm::vec4));
-    desc.Usage = D3D11_USAGE_IMMUTABLE;
-    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
-    desc.MiscFlags = D3D11_RESOURCE_MISC_BUFFER_STRUCTURED;
-    desc.StructureByteStride = sizeof(glm::vec4);
-    const D3D11_SUBRESOURCE_DATA data{directions.data(), 0, 0};
-    check(device->CreateBuffer(&desc, &data, &sphereDirections_), "CreateBuffer (sphere directions)");
-    check(device->CreateShaderResourceView(sphereDirections_.Get(), nullptr, &sphereDirectionsView_), "CreateShaderResourceView (sphere directions)");
+    sphereDirectionsView_ = createSphereDirectionsView(device, parameters_.sphereSamples);
 
     const auto slabs = [&](Stage stage, unsigned count, unsigned perUnit, int order) {
         for (unsigned first = 0; first < count; first += perUnit) units_.push_back({stage, first, std::min(first + perUnit, count), order});
@@ -208,28 +176,8 @@ void ScatteringPrecomputation::runAll(ID3D11DeviceContext* context, ShaderLibrar
                   n.netDensityZenith, n.netDensityHeight, n.height, n.viewZenith, n.sunZenith, n.sunView, parameters_.scatteringOrders,
                   n.ambientLight);
     log::info(std::string("atmosphere: pre-computing ") + what);
-    const auto start = std::chrono::steady_clock::now();
-    int reported = 0;
-    while (step(context, shaders)) {
-        const int percent = static_cast<int>(progress() * 100.0);
-        if (percent >= reported + 10 || done()) {
-            context->Flush();
-            log::info("atmosphere: " + std::to_string(percent) + "%, next: " + currentStage());
-            reported = percent;
-        }
-    }
-    // Wait for the GPU, so that the time said is the pre-computation's.
-    D3D11_QUERY_DESC desc{D3D11_QUERY_EVENT, 0};
-    ComPtr<ID3D11Device> device;
-    context->GetDevice(&device);
-    ComPtr<ID3D11Query> finished;
-    check(device->CreateQuery(&desc, &finished), "CreateQuery (event)");
-    context->End(finished.Get());
-    BOOL signalled = FALSE;
-    while (context->GetData(finished.Get(), &signalled, sizeof(signalled), 0) != S_OK) Sleep(1);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::snprintf(what, sizeof(what), "atmosphere: tables ready in %.2f s", seconds);
-    log::info(what);
+    runAllUnits(context, "atmosphere: ",
+                {[&] { return step(context, shaders); }, [&] { return progress(); }, [&] { return currentStage(); }});
 }
 
 }  // namespace firmament

@@ -10,6 +10,7 @@
 // on the WARP device, so that a recompute can run one unit per frame and the window stays
 // responsive; runAll() does everything at once, with progress in the log.
 #include "atmosphere/AtmosphereParameters.h"
+#include "atmosphere/PrecomputationSupport.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/ShaderLibrary.h"
 #include "gpu/SharedStructures.h"
@@ -68,7 +69,6 @@ private:
     Texture3D scattered_;
     Texture3D orders_[2];
     Texture3D highOrders_[2];
-    ComPtr<ID3D11Buffer> sphereDirections_;
     ComPtr<ID3D11ShaderResourceView> sphereDirectionsView_;
     ConstantBuffer<gpu::AtmosphereConstants> atmosphere_;
     ConstantBuffer<gpu::PrecomputeSliceConstants> slab_;
@@ -76,12 +76,5 @@ private:
     std::vector<Unit> units_;
     size_t next_ = 0;
 };
-
-// The sampler every look-up into the tables uses.
-ComPtr<ID3D11SamplerState> createLinearClampSampler(ID3D11Device* device);
-
-// `count` directions spread evenly over the unit sphere (a spherical Fibonacci set: equal
-// areas, y from 1 - 1/count down to -1 + 1/count): the quadrature points of eq. 1 and 3.
-std::vector<glm::vec4> uniformSphereDirections(int count);
 
 }  // namespace firmament

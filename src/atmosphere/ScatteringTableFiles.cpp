@@ -1,9 +1,8 @@
 #include "atmosphere/ScatteringTableFiles.h"
 
+#include "atmosphere/TableFileSupport.h"
 #include "core/Error.h"
 #include "gpu/Readback.h"
-
-#include <windows.h>
 
 #include <cstdio>
 #include <cstring>
@@ -13,13 +12,6 @@ namespace firmament {
 namespace {
 
 constexpr int kFormatVersion = 2;  // raise when the files' layout changes
-
-// FNV-1a, 64 bits: stable across builds and platforms, unlike std::hash.
-std::uint64_t fnv1a(const void* data, size_t size, std::uint64_t hash) {
-    const auto* bytes = static_cast<const std::uint8_t*>(data);
-    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 0x100000001b3ull;
-    return hash;
-}
 
 const ShaderKey kPrecomputeShaders[] = {{"atmosphere/precompute_net_density.hlsl", "main", "cs_5_0", {}},
                                         {"atmosphere/precompute_single_scattering.hlsl", "main", "cs_5_0", {}},
@@ -45,25 +37,6 @@ ExrAttributes commonAttributes(const AtmosphereParameters& p, const std::string&
         "-0.1975) tan(1.386)) / 1.1 + 0.74); sun-view: 0.5 +- 0.5 |2 (theta / pi - 0.5)|^1.5. Texel centres sit at u = i / (N - 1); "
         "the view zenith's halves each span N / 2 texels.");
     return a;
-}
-
-void writeAtomically(const std::filesystem::path& path, const auto& image, const ExrAttributes& attributes) {
-    // A name of this process's own: two programs may cache the same tables at once.
-    const auto temporary = std::filesystem::path(path).concat(".part" + std::to_string(GetCurrentProcessId()));
-    writeExr(temporary, image, attributes);
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) throw Error("cannot move '" + temporary.string() + "' to '" + path.string() + "': " + ec.message());
-}
-
-std::string checkHeader(const ExrAttributes& a, const std::string& key, int width, int height, int fileWidth, int fileHeight) {
-    const auto found = a.find("firmament.lut.key");
-    if (found == a.end() || !std::holds_alternative<std::string>(found->second)) return "it has no firmament.lut.key";
-    if (std::get<std::string>(found->second) != key) return "its key differs (made for other parameters or shaders)";
-    if (fileWidth != width || fileHeight != height)
-        return "it is " + std::to_string(fileWidth) + "x" + std::to_string(fileHeight) + ", not " + std::to_string(width) + "x" +
-               std::to_string(height);
-    return {};
 }
 
 struct FourDimensionalTable {
@@ -118,16 +91,7 @@ std::vector<std::uint16_t> untileVolume(const HalfRgbaImage& image, const LutDim
 }  // namespace
 
 std::string scatteringTableKey(const AtmosphereParameters& parameters, ShaderLibrary& shaders) {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
-    const std::string text = parameters.describe() + " format=" + std::to_string(kFormatVersion);
-    hash = fnv1a(text.data(), text.size(), hash);
-    for (const ShaderKey& key : kPrecomputeShaders) {
-        const auto& bytecode = shaders.bytecode(key);
-        hash = fnv1a(bytecode.data(), bytecode.size(), hash);
-    }
-    char hex[17];
-    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(hash));
-    return hex;
+    return tableKey(parameters.describe() + " format=" + std::to_string(kFormatVersion), shaders, kPrecomputeShaders);
 }
 
 void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, const ScatteringPrecomputation& tables,
@@ -149,14 +113,14 @@ void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, c
         "x: cosine of the zenith angle, -1 to 1 at texel centres; y: altitude, u_h = sqrt(h / H_atm), 0 in the top row. "
         "R, G, B: Rayleigh, Mie and ozone density integrated along the ray to the top (m of sea-level density; the ozone "
         "layer's peak density for B). Rays that meet the ground hold the grazing ray's value.");
-    writeAtomically(folder / (prefix + "net-density.exr"), densityImage, a);
+    writeTableAtomically(folder / (prefix + "net-density.exr"), densityImage, a);
 
     for (const FourDimensionalTable& table : fourDimensionalTables(tables.tables())) {
         a = commonAttributes(p, key);
         a["firmament.lut.name"] = std::string(table.name);
         a["firmament.lut.dimensions"] = dimensions(n);
         a["firmament.lut.layout"] = tiledLayout(n);
-        writeAtomically(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n), a);
+        writeTableAtomically(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n), a);
     }
 
     const ReadbackImage ambient = readTexture2D(device, context, tables.tables().ambientLight.texture.Get());
@@ -166,7 +130,7 @@ void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, c
     a["firmament.lut.name"] = std::string("ambient sky light: irradiance of the whole sky on a horizontal surface on the ground, per unit sun irradiance");
     a["firmament.lut.dimensions"] = std::to_string(n.ambientLight) + " (sun zenith)";
     a["firmament.lut.layout"] = std::string("x: cosine of the sun's zenith angle, -1 to 1 at texel centres (document 000, eq. 3)");
-    writeAtomically(folder / (prefix + "ambient-light.exr"), ambientImage, a);
+    writeTableAtomically(folder / (prefix + "ambient-light.exr"), ambientImage, a);
 }
 
 std::string readScatteringTables(ID3D11DeviceContext* context, ScatteringPrecomputation& tables, const std::string& key,
@@ -187,15 +151,15 @@ std::string readScatteringTables(ID3D11DeviceContext* context, ScatteringPrecomp
     } catch (const Error& e) {
         return e.what();
     }
-    if (auto why = checkHeader(density.attributes, key, n.netDensityZenith, n.netDensityHeight, density.image.width, density.image.height);
+    if (auto why = checkTableHeader(density.attributes, key, n.netDensityZenith, n.netDensityHeight, density.image.width, density.image.height);
         !why.empty())
         return densityPath.string() + ": " + why;
     for (size_t i = 0; i < tableList.size(); ++i)
-        if (auto why = checkHeader(fourD[i].attributes, key, n.height * n.sunZenith, n.viewZenith * n.sunView, fourD[i].image.width,
+        if (auto why = checkTableHeader(fourD[i].attributes, key, n.height * n.sunZenith, n.viewZenith * n.sunView, fourD[i].image.width,
                                    fourD[i].image.height);
             !why.empty())
             return (folder / (prefix + tableList[i].file)).string() + ": " + why;
-    if (auto why = checkHeader(ambient.attributes, key, n.ambientLight, 1, ambient.image.width, ambient.image.height); !why.empty())
+    if (auto why = checkTableHeader(ambient.attributes, key, n.ambientLight, 1, ambient.image.width, ambient.image.height); !why.empty())
         return ambientPath.string() + ": " + why;
 
     context->UpdateSubresource(tables.tables().netDensity.texture.Get(), 0, nullptr, density.image.rgba.data(),

@@ -18,6 +18,7 @@ namespace firmament {
 // the pre-computation shaders' bytecode (an edited shader makes new tables).
 std::string scatteringTableKey(const AtmosphereParameters& parameters, ShaderLibrary& shaders);
 
+
 // Writes every table of a complete pre-computation into `folder` as "<prefix>net-density.exr",
 // "<prefix>single-scattering.exr" and the others above (through a temporary file each, so that a reader never
 // sees half a file). Waits for the GPU. Throws Error.

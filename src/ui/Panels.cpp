@@ -38,8 +38,15 @@ void basicPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRe
 
 void additionalPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRequests& requests) {
     ImGui::SeparatorText("Atmosphere");
-    editSection(section(sections, "atmosphere"), {"singleScattering", "multipleScattering", "integrationSteps", "scatteringOrders", "aerosolDensity", "aerosolAbsorption",
-                                                   "mieAsymmetry", "customCoefficients", "ozone", "lutResolution", "animateSun"});
+    const AtmosphereSettings& atmosphere = m.state.atmosphere;
+    const bool comparing = atmosphere.comparison != ModelComparison::None;
+    editSection(section(sections, "atmosphere"), {"model", "comparison"});
+    // Each model's own controls, shown while it draws.
+    if (atmosphere.model == AtmosphereModel::Yusov2013 || comparing)
+        editSection(section(sections, "atmosphere"), {"singleScattering", "multipleScattering", "integrationSteps"});
+    if (atmosphere.model == AtmosphereModel::Bruneton2008 || comparing) editSection(section(sections, "atmosphere"), {"groundAlbedo"});
+    editSection(section(sections, "atmosphere"), {"scatteringOrders", "aerosolDensity", "aerosolAbsorption", "mieAsymmetry", "customCoefficients",
+                                                   "ozone", "lutResolution", "animateSun"});
     if (m.state.atmosphere.customCoefficients) editSection(section(sections, "atmosphere"), {"rayleighColour", "mieColour"});
     atmosphereProgress(m);
     ImGui::SeparatorText("Camera");

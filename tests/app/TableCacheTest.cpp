@@ -80,5 +80,37 @@ TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
     std::filesystem::remove_all(folder);
 }
 
+// Both models at once (the split view): each caches and exports its own tables, and a later
+// run loads both.
+TEST(TableCache, BothModelsCacheAndExportTheirTables) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-table-cache-both";
+    std::filesystem::remove_all(folder);
+    const auto cache = folder / "cache", exported = folder / "exported";
+    ProcessResult run = runWithCache(cache, {L"--set", L"atmosphere.comparison=split", L"--export-luts", exported.wstring()});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_EQ(filesIn(cache).size(), 8u);  // Yusov's five, Bruneton's three
+    for (const char* name : {"bruneton-transmittance.exr", "bruneton-irradiance.exr", "bruneton-inscatter.exr", "multiple-scattering.exr"})
+        EXPECT_TRUE(std::filesystem::exists(exported / name)) << name;
+    const ExrFile inscatter = readExr(exported / "bruneton-inscatter.exr");
+    EXPECT_EQ(inscatter.image.width, 8 * 4);    // mu_s x nu
+    EXPECT_EQ(inscatter.image.height, 32 * 8);  // mu x radius layers
+    EXPECT_EQ(std::get<std::string>(inscatter.attributes.at("firmament.lut.dimensions")), "8 x 32 x 8 x 4 (r, mu, mu_s, nu)");
+    for (const char* name : {"firmament.lut.name", "firmament.lut.layout", "firmament.lut.parameterization", "firmament.lut.key",
+                             "firmament.atmosphere.groundAlbedo", "firmament.atmosphere.mieScattering"})
+        EXPECT_TRUE(inscatter.attributes.count(name)) << name;
+    const FloatExrFile transmittance = readFloatExr(exported / "bruneton-transmittance.exr");
+    EXPECT_EQ(transmittance.image.width, 64);
+    EXPECT_GT(transmittance.image.rgba[(transmittance.image.width - 1) * 4], 0.5f);  // looking up from the ground: mostly clear
+
+    run = runWithCache(cache, {L"--set", L"atmosphere.comparison=split"});
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("atmosphere (Bruneton 2008): tables"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("pre-computing"), std::string::npos) << run.output;
+    const auto first = run.output.find("loaded from the cache");
+    ASSERT_NE(first, std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("loaded from the cache", first + 1), std::string::npos) << run.output;
+    std::filesystem::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace firmament::test

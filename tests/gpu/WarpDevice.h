@@ -9,7 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+
 #include <cstring>
+#include <initializer_list>
 #include <memory>
 #include <vector>
 
@@ -58,6 +61,33 @@ protected:
         context()->CSSetUnorderedAccessViews(0, 1, uav.GetAddressOf(), nullptr);
         context()->Dispatch(groups, 1, 1);
         return asVector<Out>(readBuffer(device(), context(), outputBuffer.Get()));
+    }
+
+    // Runs a probe shader of the test library (one thread per query, 64 to a group): queries
+    // at t0, `tables` from t1 on, constant buffers from b0, a linear clamp sampler at s0, and
+    // one float4 result per query at u0.
+    template <typename Query>
+    std::vector<glm::vec4> runProbe(const ShaderKey& key, const std::vector<Query>& queries, std::initializer_list<ID3D11Buffer*> constants,
+                                    std::initializer_list<ID3D11ShaderResourceView*> tables, ID3D11SamplerState* sampler) {
+        auto input = structuredBuffer(queries, false);
+        auto output = structuredBuffer(std::vector<glm::vec4>(queries.size(), glm::vec4(-1.0f)), true);
+        ComPtr<ID3D11ShaderResourceView> inputView;
+        ComPtr<ID3D11UnorderedAccessView> outputView;
+        EXPECT_HRESULT_SUCCEEDED(device()->CreateShaderResourceView(input.Get(), nullptr, &inputView));
+        EXPECT_HRESULT_SUCCEEDED(device()->CreateUnorderedAccessView(output.Get(), nullptr, &outputView));
+        std::vector<ID3D11ShaderResourceView*> views{inputView.Get()};
+        views.insert(views.end(), tables.begin(), tables.end());
+        context()->CSSetShader(testShaderLibrary->computeShader(key), nullptr, 0);
+        context()->CSSetConstantBuffers(0, static_cast<UINT>(constants.size()), constants.begin());
+        context()->CSSetShaderResources(0, static_cast<UINT>(views.size()), views.data());
+        context()->CSSetSamplers(0, 1, &sampler);
+        context()->CSSetUnorderedAccessViews(0, 1, outputView.GetAddressOf(), nullptr);
+        context()->Dispatch(static_cast<UINT>((queries.size() + 63) / 64), 1, 1);
+        ID3D11UnorderedAccessView* none = nullptr;
+        context()->CSSetUnorderedAccessViews(0, 1, &none, nullptr);
+        const std::vector<ID3D11ShaderResourceView*> noViews(views.size(), nullptr);
+        context()->CSSetShaderResources(0, static_cast<UINT>(noViews.size()), noViews.data());
+        return asVector<glm::vec4>(readBuffer(device(), context(), output.Get()));
     }
 
     template <typename T>

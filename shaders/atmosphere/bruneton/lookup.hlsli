@@ -1,0 +1,57 @@
+#ifndef FIRMAMENT_BRUNETON_LOOKUP_HLSLI
+#define FIRMAMENT_BRUNETON_LOOKUP_HLSLI
+// Look-ups into Bruneton and Neyret 2008's tables (document 002): transmittance to the top of
+// the atmosphere, ground irradiance, and the 4D in-scatter table packed into 3D.
+#include "atmosphere/bruneton/parameterization.hlsli"
+
+// Transmittance from radius r to the top along zenith cosine mu. The table holds, for rays
+// that meet the ground, the grazing ray's value: callers test the horizon themselves.
+float3 transmittanceToTop(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4> lut, SamplerState linearClamp, float r, float mu) {
+    return lut.SampleLevel(linearClamp, transmittanceUv(a, b, r, mu), 0).rgb;
+}
+
+// The sun's light reaching radius r at sun zenith cosine mu_s: zero where the Earth hides it.
+float3 sunTransmittanceAt(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4> lut, SamplerState linearClamp, float r, float muS) {
+    return muS < cosHorizonAtRadius(a, r) ? 0.0 : transmittanceToTop(a, b, lut, linearClamp, r, muS);
+}
+
+// Transmittance between the point at radius r and the point at distance d along zenith cosine
+// mu, as a ratio of two transmittances to the top (Bruneton 2008, eq. in section 4): along the
+// ray where it rises, against it where it falls.
+float3 transmittanceAlong(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4> lut, SamplerState linearClamp, float r, float mu,
+                          float d) {
+    float r1 = sqrt(max(r * r + d * d + 2.0 * r * mu * d, a.earth.x * a.earth.x));
+    float mu1 = clamp((r * mu + d) / r1, -1.0, 1.0);
+    float3 ratio = mu > 0.0 ? transmittanceToTop(a, b, lut, linearClamp, r, mu) / max(transmittanceToTop(a, b, lut, linearClamp, r1, mu1), 1e-30)
+                            : transmittanceToTop(a, b, lut, linearClamp, r1, -mu1) / max(transmittanceToTop(a, b, lut, linearClamp, r, -mu), 1e-30);
+    return min(ratio, 1.0);
+}
+
+// Irradiance on a horizontal surface at radius r, per unit sun irradiance.
+float3 irradianceAt(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4> lut, SamplerState linearClamp, float r, float muS) {
+    return lut.SampleLevel(linearClamp, irradianceUv(a, b, r, muS), 0).rgb;
+}
+
+// The 4D table at (altitude h, mu, mu_s, nu), in the half of the view zenith axis `groundHalf` says:
+// trilinear in the 3D texture, linear between the two nu slices by hand.
+float4 sampleInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float h, float mu,
+                       float muS, float nu, bool groundHalf) {
+    float4 n = b.inscatterSize;
+    float4 u = inscatterUnit(a, b, h, mu, muS, nu, groundHalf);
+    float slice = u.w * (n.w - 1.0);
+    float slice0 = clamp(floor(slice), 0.0, n.w - 2.0);
+    float weight = saturate(slice - slice0);
+    float x = (slice0 + texelCentre(u.z, n.z)) / n.w;
+    float3 uvw = float3(x, u.y, texelCentre(u.x, n.x));
+    return lerp(lut.SampleLevel(linearClamp, uvw, 0), lut.SampleLevel(linearClamp, uvw + float3(1.0 / n.w, 0.0, 0.0), 0), weight);
+}
+
+// Single Mie scattering's colour from its red channel (document 002, "getMie"): the table keeps
+// Rayleigh's RGB and Mie's red only; Mie's other channels follow from the ratio of the two
+// species, which single scattering makes close to beta_M / beta_R per channel.
+float3 mieFromRed(AtmosphereConstants a, float4 rayleighMie) {
+    return rayleighMie.rgb * rayleighMie.w / max(rayleighMie.r, 1e-12) * (a.rayleighScattering.r / a.rayleighScattering.rgb) *
+           (a.mieScattering.rgb / a.mieScattering.r);
+}
+
+#endif

@@ -1,0 +1,63 @@
+// The two atmosphere models side by side, from outside: a split frame is Yusov's frame on its
+// left half and Bruneton's on its right, pixel for pixel; a difference frame is the absolute
+// difference of the two. All compared in the captured EXR, before tone mapping.
+#include "core/ExrImage.h"
+#include "support/Process.h"
+#include "support/TestPaths.h"
+
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace firmament::test {
+namespace {
+
+constexpr int kWidth = 64, kHeight = 40;
+
+// A small headless capture over the orientation grid at sunset, with `extra` settings.
+ExrFile capture(const std::filesystem::path& folder, const std::string& name, std::vector<std::wstring> extra) {
+    std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
+                                   L"--set", L"camera.pitch=2", L"--set", L"sun.elevation=8", L"--set", L"atmosphere.lutResolution=small (8x32x16x8)",
+                                   L"--capture", (folder / (name + ".png")).wstring()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const ProcessResult run = runProcess(firmamentExe(), args);
+    EXPECT_EQ(run.exitCode, 0u) << run.output;
+    return readExr(folder / (name + ".exr"));
+}
+
+float channel(const ExrFile& file, int x, int y, int c) {
+    Imath::half h;
+    h.setBits(file.image.halfBits[(static_cast<size_t>(y) * kWidth + x) * 4 + c]);
+    return static_cast<float>(h);
+}
+
+TEST(ModelComparison, SplitAndDifferenceViewsAreMadeOfBothModels) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-model-comparison";
+    std::filesystem::remove_all(folder);
+    const ExrFile yusov = capture(folder, "yusov", {L"--set", L"atmosphere.model=Yusov 2013"});
+    const ExrFile bruneton = capture(folder, "bruneton", {L"--set", L"atmosphere.model=Bruneton 2008"});
+    const ExrFile split = capture(folder, "split", {L"--set", L"atmosphere.comparison=split"});
+    const ExrFile difference = capture(folder, "difference", {L"--set", L"atmosphere.comparison=difference"});
+    ASSERT_EQ(std::get<std::string>(split.attributes.at("firmament.atmosphere.comparison")), "Split");
+    ASSERT_EQ(std::get<std::string>(bruneton.attributes.at("firmament.atmosphere.model")), "Bruneton 2008");
+
+    int differing = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float left = channel(yusov, x, y, c), right = channel(bruneton, x, y, c);
+                ASSERT_EQ(channel(split, x, y, c), x < kWidth / 2 ? left : right) << "split pixel " << x << "," << y;
+                const float expected = std::abs(left - right);
+                ASSERT_NEAR(channel(difference, x, y, c), expected, 2e-3f * std::max(left, right) + 1e-6f) << "difference pixel " << x << "," << y;
+                if (expected > 1e-3f * std::max(left, right)) ++differing;
+            }
+    // The models differ somewhere (the ground, which only Bruneton's model lights itself): the
+    // difference view is not black.
+    EXPECT_GT(differing, kWidth * kHeight / 10);
+    std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace firmament::test

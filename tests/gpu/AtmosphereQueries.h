@@ -1,0 +1,59 @@
+#pragma once
+// Points at which the atmosphere tests read the tables: a position relative to the Earth's
+// centre, a view and a sun direction, laid out as the probe shaders' Query structure.
+#include "atmosphere/AtmosphereParameters.h"
+#include "atmosphere/ScatteringParameterization.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace firmament::test {
+
+struct Query {
+    glm::vec4 position, viewDir, sunDir;
+};
+
+struct QuerySet {
+    std::vector<Query> queries;
+    std::vector<atmosphere::ScatteringCoordinates> coordinates;  // the same points as table coordinates
+};
+
+// `count` random points: altitudes crowded near the ground (u^2 H_atm), views uniform in the
+// sine of their elevation but never within `horizonBandDegrees` of the horizon, suns from -10 to
+// 90 degrees of elevation at any azimuth.
+inline QuerySet randomSkyQueries(const AtmosphereParameters& p, size_t count, unsigned seed, double horizonBandDegrees) {
+    constexpr double kPi = 3.14159265358979323846;
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    QuerySet set;
+    while (set.queries.size() < count) {
+        const double u = unit(random);
+        const double h = u * u * p.atmosphereHeight;
+        const double viewElevation = std::asin(unit(random) * 2.0 - 1.0);
+        const double horizonElevation = std::asin(atmosphere::cosHorizon(p, h));
+        if (std::abs(viewElevation - horizonElevation) < horizonBandDegrees * kPi / 180.0) continue;
+        const double sunElevation = (-10.0 + 100.0 * unit(random)) * kPi / 180.0;
+        const double sunAzimuth = unit(random) * 2.0 * kPi;
+        const glm::dvec3 viewDir(std::cos(viewElevation), std::sin(viewElevation), 0.0);
+        const glm::dvec3 sunDir(std::cos(sunElevation) * std::cos(sunAzimuth), std::sin(sunElevation), std::cos(sunElevation) * std::sin(sunAzimuth));
+        const glm::dvec3 position(0.0, p.earthRadius + h, 0.0);
+        set.queries.push_back({glm::vec4(glm::vec3(position), 0.0f), glm::vec4(glm::vec3(viewDir), 0.0f), glm::vec4(glm::vec3(sunDir), 0.0f)});
+        set.coordinates.push_back({h, viewDir.y, sunDir.y, glm::dot(viewDir, sunDir)});
+    }
+    return set;
+}
+
+// The largest channel error relative to the brightest channel of `expected`, or to `floor`
+// where that is darker.
+inline double errorRelativeToBrightest(glm::dvec3 got, glm::dvec3 expected, double floor) {
+    const double scale = std::max({expected.r, expected.g, expected.b, floor});
+    double error = 0.0;
+    for (int ch = 0; ch < 3; ++ch) error = std::max(error, std::abs(got[ch] - expected[ch]) / scale);
+    return error;
+}
+
+}  // namespace firmament::test
