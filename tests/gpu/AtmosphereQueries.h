@@ -47,6 +47,23 @@ inline QuerySet randomSkyQueries(const AtmosphereParameters& p, size_t count, un
     return set;
 }
 
+// Points from the ground to 1000 km (above the atmosphere), looking every 15 degrees from the
+// zenith to the nadir, with the sun every 5 degrees from the zenith to the nadir: where a
+// look-up could produce NaN or Inf.
+inline std::vector<Query> extremeQueries(double earthRadius) {
+    constexpr double kPi = 3.14159265358979323846;
+    std::vector<Query> queries;
+    for (const double h : {0.0, 1.0, 100.0, 10.0e3, 79.9e3, 80.0e3, 200.0e3, 1000.0e3})
+        for (int sun = 0; sun <= 36; ++sun)
+            for (int view = 0; view <= 12; ++view) {
+                const double sunZenith = sun * kPi / 36.0, viewZenith = view * kPi / 12.0;
+                queries.push_back({glm::vec4(0.0f, static_cast<float>(earthRadius + h), 0.0f, 0.0f),
+                                   glm::vec4(static_cast<float>(std::sin(viewZenith)), static_cast<float>(std::cos(viewZenith)), 0.0f, 0.0f),
+                                   glm::vec4(0.0f, static_cast<float>(std::cos(sunZenith)), static_cast<float>(std::sin(sunZenith)), 0.0f)});
+            }
+    return queries;
+}
+
 // The largest channel error relative to the brightest channel of `expected`, or to `floor`
 // where that is darker.
 inline double errorRelativeToBrightest(glm::dvec3 got, glm::dvec3 expected, double floor) {

@@ -19,6 +19,42 @@ static const int kOrderSteps = 64;
 
 Texture2D<float4> transmittanceTable : register(t0);
 
+// A march along the texel's ray by the trapezoidal rule: where step i lands (altitude, radius,
+// zenith cosines of the view and the sun there) and the transmittance from the texel to it,
+// from the density integrated so far.
+struct MarchPoint {
+    float h, r, mu, muS;
+    float3 transmittance;
+};
+struct March {
+    InscatterSample s;
+    float dt;
+    float3 net, density;  // density integrated from the start; density at the last point
+};
+
+March startMarch(InscatterSample s, int steps) {
+    March m;
+    m.s = s;
+    m.dt = rayLength(s.r, s.rho2, s.mu, s.groundHalf) / steps;
+    m.net = 0.0;
+    m.density = particleDensity(atmosphere, s.h);
+    return m;
+}
+
+MarchPoint marchTo(inout March m, int i) {
+    float t = i * m.dt;
+    MarchPoint p;
+    p.h = altitudeAt(m.s.r, m.s.rho2, m.s.mu, t);
+    p.r = atmosphere.earth.x + p.h;
+    float3 density = particleDensity(atmosphere, p.h);
+    if (i > 0) m.net += (m.density + density) * (0.5 * m.dt);
+    m.density = density;
+    p.mu = clamp((m.s.r * m.s.mu + t) / p.r, -1.0, 1.0);
+    p.muS = clamp((m.s.nu * t + m.s.muS * m.s.r) / p.r, -1.0, 1.0);
+    p.transmittance = exp(-opticalDepth(atmosphere, m.net));
+    return p;
+}
+
 // ---- singleScattering ----
 RWTexture3D<float4> deltaRayleighOut : register(u0);
 RWTexture3D<float4> deltaMieOut : register(u1);
@@ -28,26 +64,18 @@ void singleScattering(uint3 id : SV_DispatchThreadID) {
     uint3 texel;
     InscatterSample s;
     if (!inscatterThread(id, texel, s)) return;
-    float dt = rayLength(s.r, s.rho2, s.mu, s.groundHalf) / kSingleSteps;
-    float3 net = 0.0;  // density integrated from x to y
-    float3 density = particleDensity(atmosphere, s.h);
+    March m = startMarch(s, kSingleSteps);
     float3 rayleigh = 0.0, mie = 0.0, previousR = 0.0, previousM = 0.0;
     for (int i = 0; i <= kSingleSteps; ++i) {
-        float t = i * dt;
-        float hi = altitudeAt(s.r, s.rho2, s.mu, t);
-        float ri = atmosphere.earth.x + hi;
-        float3 di = particleDensity(atmosphere, hi);
-        if (i > 0) net += (density + di) * (0.5 * dt);
-        density = di;
-        float muSi = clamp((s.nu * t + s.muS * s.r) / ri, -1.0, 1.0);
-        float3 light = exp(-opticalDepth(atmosphere, net)) * sunTransmittanceAt(atmosphere, bruneton, transmittanceTable, linearClamp, ri, muSi);
-        float3 r = di.x * light, m = di.y * light;
+        MarchPoint p = marchTo(m, i);
+        float3 light = p.transmittance * sunTransmittanceAt(atmosphere, bruneton, transmittanceTable, linearClamp, p.r, p.muS);
+        float3 r = m.density.x * light, mi = m.density.y * light;
         if (i > 0) {
-            rayleigh += (previousR + r) * (0.5 * dt);
-            mie += (previousM + m) * (0.5 * dt);
+            rayleigh += (previousR + r) * (0.5 * m.dt);
+            mie += (previousM + mi) * (0.5 * m.dt);
         }
         previousR = r;
-        previousM = m;
+        previousM = mi;
     }
     deltaRayleighOut[texel] = float4(rayleigh * atmosphere.rayleighScattering.rgb, 0.0);
     deltaMieOut[texel] = float4(mie * atmosphere.mieScattering.rgb, 0.0);
@@ -123,22 +151,12 @@ void order(uint3 id : SV_DispatchThreadID) {
     uint3 texel;
     InscatterSample s;
     if (!inscatterThread(id, texel, s)) return;
-    float dt = rayLength(s.r, s.rho2, s.mu, s.groundHalf) / kOrderSteps;
-    float3 net = 0.0;
-    float3 density = particleDensity(atmosphere, s.h);
+    March m = startMarch(s, kOrderSteps);
     float3 result = 0.0, previous = 0.0;
     for (int i = 0; i <= kOrderSteps; ++i) {
-        float t = i * dt;
-        float hi = altitudeAt(s.r, s.rho2, s.mu, t);
-        float ri = atmosphere.earth.x + hi;
-        float3 di = particleDensity(atmosphere, hi);
-        if (i > 0) net += (density + di) * (0.5 * dt);
-        density = di;
-        float mui = clamp((s.r * s.mu + t) / ri, -1.0, 1.0);
-        float muSi = clamp((s.nu * t + s.muS * s.r) / ri, -1.0, 1.0);
-        float3 j = sampleInscatter(atmosphere, bruneton, deltaJ, linearClamp, hi, mui, muSi, s.nu, s.groundHalf).rgb;
-        float3 current = exp(-opticalDepth(atmosphere, net)) * j;
-        if (i > 0) result += (previous + current) * (0.5 * dt);
+        MarchPoint p = marchTo(m, i);
+        float3 current = p.transmittance * sampleInscatter(atmosphere, bruneton, deltaJ, linearClamp, p.h, p.mu, p.muS, s.nu, s.groundHalf).rgb;
+        if (i > 0) result += (previous + current) * (0.5 * m.dt);
         previous = current;
     }
     deltaScatteringOut[texel] = float4(result, 0.0);
