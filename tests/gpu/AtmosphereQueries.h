@@ -2,12 +2,14 @@
 // Points at which the atmosphere tests read the tables: a position relative to the Earth's
 // centre, a view and a sun direction, laid out as the probe shaders' Query structure.
 #include "atmosphere/AtmosphereParameters.h"
+#include "atmosphere/ReferenceAtmosphere.h"
 #include "atmosphere/ScatteringParameterization.h"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -62,6 +64,49 @@ inline std::vector<Query> extremeQueries(double earthRadius) {
                                    glm::vec4(0.0f, static_cast<float>(std::cos(sunZenith)), static_cast<float>(std::sin(sunZenith)), 0.0f)});
             }
     return queries;
+}
+
+// Orders 2 to maxOrder by the reference's Monte Carlo at each query (seeds 1000 + i).
+inline std::vector<atmosphere::ReferenceAtmosphere::Estimate> monteCarloHighOrders(const atmosphere::ReferenceAtmosphere& reference,
+                                                                                 const std::vector<Query>& queries, int maxOrder, int paths) {
+    std::vector<atmosphere::ReferenceAtmosphere::Estimate> estimates;
+    for (size_t i = 0; i < queries.size(); ++i)
+        estimates.push_back(reference.highOrderScattering(glm::dvec3(queries[i].position), glm::dvec3(queries[i].viewDir),
+                                                          glm::dvec3(queries[i].sunDir), maxOrder, paths, 1000u + static_cast<unsigned>(i)));
+    return estimates;
+}
+
+// A table's high orders against Monte Carlo estimates: per point the error beyond 4 standard
+// errors, relative to the brightest channel of the estimate (or `floor`). The median and 90th
+// percentile over every point; the largest over the rays longer than `shortRay` metres (rays
+// to the ground from a few hundred metres fall between the tables' first altitude layers, or
+// near the nadir between their first view texels, and are 2-3 times off: see
+// docs/atmosphere.md). Points off by more than 30% are printed.
+struct HighOrderErrors {
+    double median, ninetieth, largestLongRay;
+};
+
+inline HighOrderErrors highOrderErrors(const atmosphere::ReferenceAtmosphere& reference, const std::vector<glm::dvec3>& table,
+                                       const std::vector<atmosphere::ReferenceAtmosphere::Estimate>& estimates, double floor,
+                                       const QuerySet& set, double shortRay) {
+    std::vector<double> errors;
+    double largest = 0.0;
+    for (size_t i = 0; i < table.size(); ++i) {
+        const auto& e = estimates[i];
+        const double scale = std::max({e.mean.r, e.mean.g, e.mean.b, floor});
+        double error = 0.0;
+        for (int ch = 0; ch < 3; ++ch) error = std::max(error, std::max(0.0, std::abs(table[i][ch] - e.mean[ch]) - 4.0 * e.standardError[ch]) / scale);
+        errors.push_back(error);
+        const Query& q = set.queries[i];
+        const double length = reference.rayLength(glm::dvec3(q.position), glm::dvec3(q.viewDir));
+        if (length >= shortRay) largest = std::max(largest, error);
+        if (error > 0.3)
+            std::printf("  point %zu (h %.0f, view %.3f, sun %.3f, sun-view %.3f, ray %.0f m): table %.3e %.3e %.3e, Monte Carlo %.3e %.3e %.3e\n", i,
+                        set.coordinates[i].altitude, set.coordinates[i].cosView, set.coordinates[i].cosSun, set.coordinates[i].cosSunView, length,
+                        table[i].r, table[i].g, table[i].b, e.mean.r, e.mean.g, e.mean.b);
+    }
+    std::sort(errors.begin(), errors.end());
+    return {errors[errors.size() / 2], errors[errors.size() * 9 / 10], largest};
 }
 
 // The largest channel error relative to the brightest channel of `expected`, or to `floor`
