@@ -76,6 +76,15 @@ inline std::vector<atmosphere::ReferenceAtmosphere::Estimate> monteCarloHighOrde
     return estimates;
 }
 
+// The same estimates with the reference's single scattering added: all orders 1 to N.
+inline std::vector<atmosphere::ReferenceAtmosphere::Estimate> withSingleScattering(const atmosphere::ReferenceAtmosphere& reference,
+                                                                                 const std::vector<Query>& queries,
+                                                                                 std::vector<atmosphere::ReferenceAtmosphere::Estimate> estimates) {
+    for (size_t i = 0; i < queries.size(); ++i)
+        estimates[i].mean += reference.singleScattering(glm::dvec3(queries[i].position), glm::dvec3(queries[i].viewDir), glm::dvec3(queries[i].sunDir));
+    return estimates;
+}
+
 // A table's high orders against Monte Carlo estimates: per point the error beyond 4 standard
 // errors, relative to the brightest channel of the estimate (or `floor`). The median and 90th
 // percentile over every point; the largest over the rays longer than `shortRay` metres (rays
