@@ -3,11 +3,11 @@
 // scattering table at its texels (the integration alone) and at random points (integration
 // and interpolation together), and no NaN or Inf anywhere.
 #include "AtmosphereQueries.h"
+#include "TableFilesCheck.h"
 #include "WarpDevice.h"
 #include "atmosphere/ReferenceAtmosphere.h"
 #include "atmosphere/ScatteringPrecomputation.h"
 #include "atmosphere/ScatteringTableFiles.h"
-#include "core/FileIO.h"
 #include "gpu/ConstantBuffer.h"
 
 #include <Imath/half.h>
@@ -197,37 +197,14 @@ TEST_F(AtmosphereTables, NoNanOrInfAnywhere) {
 // another key and missing files are each refused with a reason.
 TEST_F(AtmosphereTables, TableFilesRoundTripAndRefuseBadFiles) {
     const auto computed = precompute(LutResolution::Small);
-    const std::string key = scatteringTableKey(computed->parameters(), *productShaderLibrary);
-    EXPECT_EQ(key.size(), 16u);
-    const auto folder = std::filesystem::temp_directory_path() / "firmament-table-files";
-    std::filesystem::remove_all(folder);
-    writeScatteringTables(device(), context(), *computed, key, folder, "k-");
-
-    ScatteringPrecomputation loaded(device(), computed->parameters());
-    EXPECT_FALSE(loaded.done());
-    EXPECT_EQ(readScatteringTables(context(), loaded, key, folder, "k-"), "");
-    EXPECT_TRUE(loaded.done());
-    EXPECT_EQ(readTexture3D(device(), context(), loaded.tables().singleScattering.texture.Get()).bytes,
-              readTexture3D(device(), context(), computed->tables().singleScattering.texture.Get()).bytes);
-    EXPECT_EQ(readTexture2D(device(), context(), loaded.tables().netDensity.texture.Get()).bytes,
-              readTexture2D(device(), context(), computed->tables().netDensity.texture.Get()).bytes);
-
-    ScatteringPrecomputation other(device(), computed->parameters());
-    EXPECT_EQ(readScatteringTables(context(), other, key, folder, "absent-"), "missing");
-    EXPECT_NE(readScatteringTables(context(), other, "0123456789abcdef", folder, "k-").find("key differs"), std::string::npos);
     AtmosphereParameters bigger = computed->parameters();
     bigger.lut = LutDimensions::of(LutResolution::Medium);
-    ScatteringPrecomputation resized(device(), bigger);
-    EXPECT_NE(readScatteringTables(context(), resized, key, folder, "k-").find("not"), std::string::npos);
-    // Cut the single scattering file in half: unreadable, and the message names it.
-    const auto path = folder / "k-single-scattering.exr";
-    auto bytes = readFileBytes(path);
-    bytes.resize(bytes.size() / 2);
-    writeFileBytes(path, bytes);
-    const std::string why = readScatteringTables(context(), other, key, folder, "k-");
-    EXPECT_NE(why.find("k-single-scattering.exr"), std::string::npos) << why;
-    EXPECT_FALSE(other.done());
-    std::filesystem::remove_all(folder);
+    checkTableFiles<ScatteringPrecomputation>(device(), context(), *computed, scatteringTableKey(computed->parameters(), *productShaderLibrary),
+                                              bigger, "single-scattering.exr", [&](const ScatteringPrecomputation& p) {
+                                                  const auto& t = p.tables();
+                                                  return std::vector{readTexture3D(device(), context(), t.singleScattering.texture.Get()).bytes,
+                                                                     readTexture2D(device(), context(), t.netDensity.texture.Get()).bytes};
+                                              });
 }
 
 // The high-order table (orders 2 to 4) against Monte Carlo path tracing in double precision
