@@ -6,6 +6,7 @@
 #include "atmosphere/ScatteringParameterization.h"
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,38 @@ inline QuerySet randomSkyQueries(const AtmosphereParameters& p, size_t count, un
         set.coordinates.push_back({h, viewDir.y, sunDir.y, glm::dot(viewDir, sunDir)});
     }
     return set;
+}
+
+// `count` random points for the sun's transmittance: altitudes u^2 H_atm, sun elevations
+// uniform in their sine (the horizon included).
+inline std::vector<Query> randomSunQueries(const AtmosphereParameters& p, int count, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Query> queries;
+    for (int i = 0; i < count; ++i) {
+        const double h = std::pow(unit(random), 2.0) * p.atmosphereHeight;
+        const double elevation = std::asin(unit(random) * 2.0 - 1.0);
+        queries.push_back({glm::vec4(0.0f, static_cast<float>(p.earthRadius + h), 0.0f, 0.0f), glm::vec4(0.0f),
+                           glm::vec4(static_cast<float>(std::cos(elevation)), static_cast<float>(std::sin(elevation)), 0.0f, 0.0f)});
+    }
+    return queries;
+}
+
+// The largest absolute error of the sun's transmittance at `queries` against the reference;
+// each channel of each query is also expected within `bound`.
+inline double sunTransmittanceError(const atmosphere::ReferenceAtmosphere& reference, const std::vector<Query>& queries,
+                                    const std::vector<glm::vec4>& got, double bound) {
+    double worst = 0.0;
+    for (size_t i = 0; i < queries.size(); ++i) {
+        const glm::dvec3 expected = reference.sunTransmittance(glm::dvec3(queries[i].position), glm::dvec3(queries[i].sunDir));
+        for (int ch = 0; ch < 3; ++ch) {
+            const double error = std::abs(got[i][ch] - expected[ch]);
+            worst = std::max(worst, error);
+            EXPECT_LT(error, bound) << "query " << i << " altitude " << queries[i].position.y - reference.parameters().earthRadius << " sun y "
+                                    << queries[i].sunDir.y << ": " << got[i][ch] << " vs " << expected[ch];
+        }
+    }
+    return worst;
 }
 
 // Points from the ground to 1000 km (above the atmosphere), looking every 15 degrees from the
