@@ -156,40 +156,75 @@ double ReferenceAtmosphere::sampleByDensity(glm::dvec3 start, glm::dvec3 dir, do
     return (static_cast<double>(bin) + u2) * width;
 }
 
-ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
-                                                                     int maxOrder, int paths, unsigned seed) const {
-    std::mt19937_64 random(seed);
+glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder,
+                                          std::mt19937_64& random) const {
+    constexpr double kPi = 3.14159265358979323846;
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const auto scattering = [&](glm::dvec3 rho, double cosTheta) {
         return p_.rayleighScattering * rho.x * rayleighPhase(cosTheta) + p_.mieScattering * rho.y * miePhase(cosTheta, p_.mieAsymmetry);
     };
-    glm::dvec3 sum(0.0), sumOfSquares(0.0);
-    for (int path = 0; path < paths; ++path) {
-        glm::dvec3 x = start, d = viewDir, throughput(1.0), contribution(0.0);
-        for (int order = 1; order <= maxOrder; ++order) {
-            const double length = rayLength(x, d);
-            if (length <= 0.0) break;
-            // The distance, in proportion to the density of scatterers along the segment.
-            double pdf = 0.0;
-            const double s = sampleByDensity(x, d, length, unit(random), unit(random), pdf);
-            const glm::dvec3 p = x + d * s;
-            const glm::dvec3 rho = density(glm::length(p) - p_.earthRadius);
-            const glm::dvec3 reach = throughput / pdf * glm::exp(-opticalDepth(netDensity(x, p)));
-            if (order >= 2) contribution += reach * scattering(rho, glm::dot(d, sunDir)) * sunTransmittance(p, sunDir);
-            // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi).
-            const double z = 1.0 - 2.0 * unit(random), phi = 2.0 * 3.14159265358979323846 * unit(random);
-            const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-            const glm::dvec3 w(r * std::cos(phi), z, r * std::sin(phi));
-            throughput = reach * scattering(rho, glm::dot(d, w)) * (4.0 * 3.14159265358979323846);
-            x = p;
-            d = w;
-        }
-        sum += contribution;
-        sumOfSquares += contribution * contribution;
+    glm::dvec3 x = start, d = dir, throughput(1.0), contribution(0.0);
+    for (int order = 1; order <= maxOrder; ++order) {
+        const double length = rayLength(x, d);
+        if (length <= 0.0) break;
+        // The distance, in proportion to the density of scatterers along the segment.
+        double pdf = 0.0;
+        const double s = sampleByDensity(x, d, length, unit(random), unit(random), pdf);
+        const glm::dvec3 p = x + d * s;
+        const glm::dvec3 rho = density(glm::length(p) - p_.earthRadius);
+        const glm::dvec3 reach = throughput / pdf * glm::exp(-opticalDepth(netDensity(x, p)));
+        if (order >= minOrder) contribution += reach * scattering(rho, glm::dot(d, sunDir)) * sunTransmittance(p, sunDir);
+        // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi).
+        const double z = 1.0 - 2.0 * unit(random), phi = 2.0 * kPi * unit(random);
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        const glm::dvec3 w(r * std::cos(phi), z, r * std::sin(phi));
+        throughput = reach * scattering(rho, glm::dot(d, w)) * (4.0 * kPi);
+        x = p;
+        d = w;
     }
+    return contribution;
+}
+
+namespace {
+ReferenceAtmosphere::Estimate estimate(glm::dvec3 sum, glm::dvec3 sumOfSquares, int paths) {
     const glm::dvec3 mean = sum / static_cast<double>(paths);
     const glm::dvec3 variance = glm::max(sumOfSquares / static_cast<double>(paths) - mean * mean, 0.0);
     return {mean, glm::sqrt(variance / static_cast<double>(paths))};
+}
+}  // namespace
+
+ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
+                                                                     int maxOrder, int paths, unsigned seed) const {
+    std::mt19937_64 random(seed);
+    glm::dvec3 sum(0.0), sumOfSquares(0.0);
+    for (int path = 0; path < paths; ++path) {
+        const glm::dvec3 contribution = tracePath(start, viewDir, sunDir, 2, maxOrder, random);
+        sum += contribution;
+        sumOfSquares += contribution * contribution;
+    }
+    return estimate(sum, sumOfSquares, paths);
+}
+
+ReferenceAtmosphere::Estimate ReferenceAtmosphere::skyIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int maxOrder, int paths,
+                                                                unsigned seed) const {
+    constexpr double kPi = 3.14159265358979323846;
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const glm::dvec3 up = glm::normalize(position);
+    const glm::dvec3 tangent = glm::normalize(glm::cross(up, std::abs(up.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 bitangent = glm::cross(up, tangent);
+    glm::dvec3 sum(0.0), sumOfSquares(0.0);
+    for (int path = 0; path < paths; ++path) {
+        // A direction in proportion to its cosine with the up vector (pdf cos / pi): the radiance
+        // it brings, times pi, estimates the irradiance.
+        const double u = unit(random), phi = 2.0 * kPi * unit(random);
+        const double sine = std::sqrt(u);
+        const glm::dvec3 w = tangent * (sine * std::cos(phi)) + bitangent * (sine * std::sin(phi)) + up * std::sqrt(std::max(0.0, 1.0 - u));
+        const glm::dvec3 contribution = kPi * tracePath(position, w, sunDir, 1, maxOrder, random);
+        sum += contribution;
+        sumOfSquares += contribution * contribution;
+    }
+    return estimate(sum, sumOfSquares, paths);
 }
 
 ReferenceAtmosphere::Ray ReferenceAtmosphere::ray(const ScatteringCoordinates& c) const {

@@ -53,6 +53,10 @@ public:
     };
     Estimate highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int maxOrder, int paths,
                                  unsigned seed) const;
+    // The sky's irradiance on a horizontal surface at `position`, orders 1..maxOrder (the
+    // ground black), by the same paths started in directions drawn by their cosine with the up
+    // vector: document 000's ambient light (eq. 3) and Bruneton's E.
+    Estimate skyIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int maxOrder, int paths, unsigned seed) const;
 
     // A distance along start + s dir, s in [0, length], drawn from two uniform numbers with a
     // probability density proportional to the density of air plus aerosols (piecewise constant
@@ -71,6 +75,9 @@ public:
     const AtmosphereParameters& parameters() const { return p_; }
 
 private:
+    // One path from `start` along `dir`: the light of orders minOrder..maxOrder it gathers.
+    glm::dvec3 tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder, std::mt19937_64& random) const;
+
     AtmosphereParameters p_;
 };
 

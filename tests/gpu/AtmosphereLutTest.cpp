@@ -262,6 +262,42 @@ TEST_F(AtmosphereTables, HighOrderAndMultipleTablesAtRandomPointsMatchTheReferen
     EXPECT_LT(m.largestLongRay, kMultipleLargest);
 }
 
+// The ambient sky light table (eq. 3, orders 1 to 4, medium tables) at 200 random sun angles,
+// read with the table's linear filtering, against the reference's Monte Carlo estimate of the
+// same irradiance (500 paths each): the error beyond 4 standard errors relative to the
+// brightest channel or 1e-3. Measured: median 0, 90th percentile 1.8%, largest 9.3%.
+TEST_F(AtmosphereTables, AmbientLightAtRandomSunAnglesMatchesMonteCarlo) {
+    constexpr double kMedian = 0.02, kNinetieth = 0.05, kLargest = 0.15;
+    const auto tables = precompute(LutResolution::Medium, 4);
+    const AtmosphereParameters& p = tables->parameters();
+    const ReferenceAtmosphere reference(p);
+    const ReadbackImage ambient = readTexture2D(device(), context(), tables->tables().ambientLight.texture.Get());
+    const auto texel = [&](int i) {
+        std::uint16_t bits[4];
+        std::memcpy(bits, ambient.bytes.data() + static_cast<size_t>(i) * 8, sizeof(bits));
+        glm::dvec3 value;
+        for (int ch = 0; ch < 3; ++ch) {
+            Imath::half h;
+            h.setBits(bits[ch]);
+            value[ch] = static_cast<float>(h);
+        }
+        return value;
+    };
+    const std::vector<Query> queries = randomIrradianceQueries(p, 200, 33, 1.0);  // on the ground, as the table is
+    std::vector<glm::dvec3> table;
+    for (const Query& q : queries) {
+        const double x = (q.sunDir.y * 0.5 + 0.5) * (p.lut.ambientLight - 1);
+        const int i = std::min(static_cast<int>(x), p.lut.ambientLight - 2);
+        table.push_back(glm::mix(texel(i), texel(i + 1), x - i));
+    }
+    const auto errors = irradianceErrors(reference, queries, table, 4, 500, 1e-3);
+    std::printf("ambient light against Monte Carlo at 200 sun angles: median %.4f, 90th percentile %.4f, largest %.4f\n",
+                errors[errors.size() / 2], errors[errors.size() * 9 / 10], errors.back());
+    EXPECT_LT(errors[errors.size() / 2], kMedian);
+    EXPECT_LT(errors[errors.size() * 9 / 10], kNinetieth);
+    EXPECT_LT(errors.back(), kLargest);
+}
+
 // The ambient sky light (eq. 3) from full-size tables of single scattering alone, against a
 // hemisphere integral of the reference's single scattering over 512 directions. Bounds: 2%
 // (measured 1.4%), and 16% with the sun at the zenith (measured 15% red, 5% blue): the sky

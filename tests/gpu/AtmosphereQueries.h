@@ -82,6 +82,46 @@ inline double sunTransmittanceError(const atmosphere::ReferenceAtmosphere& refer
     return worst;
 }
 
+// `count` random points for the sky's irradiance: altitudes u^2 `maxAltitude`, sun zenith
+// cosines uniform in [-0.2, 1] (below, the sky is dark), the sun at any azimuth.
+inline std::vector<Query> randomIrradianceQueries(const AtmosphereParameters& p, int count, unsigned seed, double maxAltitude) {
+    constexpr double kPi = 3.14159265358979323846;
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Query> queries;
+    for (int i = 0; i < count; ++i) {
+        const double h = std::pow(unit(random), 2.0) * maxAltitude;
+        const double cosSun = -0.2 + 1.2 * unit(random), azimuth = 2.0 * kPi * unit(random);
+        const double sinSun = std::sqrt(1.0 - cosSun * cosSun);
+        queries.push_back({glm::vec4(0.0f, static_cast<float>(p.earthRadius + h), 0.0f, 0.0f), glm::vec4(0.0f),
+                           glm::vec4(static_cast<float>(sinSun * std::cos(azimuth)), static_cast<float>(cosSun),
+                                     static_cast<float>(sinSun * std::sin(azimuth)), 0.0f)});
+    }
+    return queries;
+}
+
+// Sky irradiance from a table at `queries` against the reference's Monte Carlo (orders 1 to
+// maxOrder, `paths` each): per point the error beyond 4 standard errors relative to the
+// brightest channel of the estimate or `floor`; returns them sorted, printing those over 10%.
+inline std::vector<double> irradianceErrors(const atmosphere::ReferenceAtmosphere& reference, const std::vector<Query>& queries,
+                                            const std::vector<glm::dvec3>& table, int maxOrder, int paths, double floor) {
+    std::vector<double> errors;
+    for (size_t i = 0; i < queries.size(); ++i) {
+        const auto e = reference.skyIrradiance(glm::dvec3(queries[i].position), glm::dvec3(queries[i].sunDir), maxOrder, paths,
+                                               2000u + static_cast<unsigned>(i));
+        const double scale = std::max({e.mean.r, e.mean.g, e.mean.b, floor});
+        double error = 0.0;
+        for (int ch = 0; ch < 3; ++ch) error = std::max(error, std::max(0.0, std::abs(table[i][ch] - e.mean[ch]) - 4.0 * e.standardError[ch]) / scale);
+        errors.push_back(error);
+        if (error > 0.1)
+            std::printf("  point %zu (h %.0f, sun %.3f): table %.3e %.3e %.3e, Monte Carlo %.3e %.3e %.3e (+- %.1e %.1e %.1e)\n", i,
+                        queries[i].position.y - reference.parameters().earthRadius, queries[i].sunDir.y, table[i].r, table[i].g, table[i].b,
+                        e.mean.r, e.mean.g, e.mean.b, e.standardError.r, e.standardError.g, e.standardError.b);
+    }
+    std::sort(errors.begin(), errors.end());
+    return errors;
+}
+
 // Points from the ground to 1000 km (above the atmosphere), looking every 15 degrees from the
 // zenith to the nadir, with the sun every 5 degrees from the zenith to the nadir: where a
 // look-up could produce NaN or Inf.
