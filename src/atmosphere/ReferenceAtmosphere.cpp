@@ -227,6 +227,25 @@ ReferenceAtmosphere::Estimate ReferenceAtmosphere::skyIrradiance(glm::dvec3 posi
     return estimate(sum, sumOfSquares, paths);
 }
 
+glm::dvec3 ReferenceAtmosphere::singleScatteringIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int directions) const {
+    constexpr double kPi = 3.14159265358979323846;
+    const double goldenAngle = kPi * (3.0 - std::sqrt(5.0));
+    const glm::dvec3 up = glm::normalize(position);
+    const glm::dvec3 tangent = glm::normalize(glm::cross(up, std::abs(up.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 bitangent = glm::cross(up, tangent);
+    glm::dvec3 sum(0.0);
+    int used = 0;
+    for (int i = 0; i < directions; ++i) {
+        const double y = 1.0 - (2.0 * i + 1.0) / directions;  // the cosine with the up vector
+        if (y <= 0.0) continue;
+        const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
+        const glm::dvec3 w = tangent * (r * std::cos(goldenAngle * i)) + up * y + bitangent * (r * std::sin(goldenAngle * i));
+        sum += singleScattering(position, w, sunDir) * y;
+        ++used;
+    }
+    return sum * (2.0 * kPi / used);
+}
+
 ReferenceAtmosphere::Ray ReferenceAtmosphere::ray(const ScatteringCoordinates& c) const {
     Ray r;
     r.start = glm::dvec3(0.0, p_.earthRadius + c.altitude, 0.0);

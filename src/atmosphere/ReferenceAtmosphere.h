@@ -42,6 +42,10 @@ public:
     glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround) const;
     glm::dvec3 singleScattering(const ScatteringCoordinates& c) const;
     glm::dvec3 singleScattering(const ScatteringCoordinates& c, bool aboveHorizon) const;
+    // The irradiance single scattering gives a horizontal surface at `position`, by quadrature:
+    // the upper half of `directions` equal-area directions (a spherical Fibonacci set, as the
+    // tables use), each weighted by its cosine, 2 pi / (directions / 2) each.
+    glm::dvec3 singleScatteringIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int directions) const;
 
     // Orders 2..maxOrder of scattering (document 000's L^H, the ground black as in the tables),
     // by Monte Carlo path tracing: each path walks from the camera, a distance along its ray

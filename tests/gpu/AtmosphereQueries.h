@@ -82,6 +82,16 @@ inline double sunTransmittanceError(const atmosphere::ReferenceAtmosphere& refer
     return worst;
 }
 
+// The median, 90th percentile and largest of a set of errors.
+struct Percentiles {
+    double median, ninetieth, largest;
+};
+
+inline Percentiles percentiles(std::vector<double> errors) {
+    std::sort(errors.begin(), errors.end());
+    return {errors[errors.size() / 2], errors[errors.size() * 9 / 10], errors.back()};
+}
+
 // `count` random points for the sky's irradiance: altitudes u^2 `maxAltitude`, sun zenith
 // cosines uniform in [-0.2, 1] (below, the sky is dark), the sun at any azimuth.
 inline std::vector<Query> randomIrradianceQueries(const AtmosphereParameters& p, int count, unsigned seed, double maxAltitude) {
@@ -102,8 +112,8 @@ inline std::vector<Query> randomIrradianceQueries(const AtmosphereParameters& p,
 
 // Sky irradiance from a table at `queries` against the reference's Monte Carlo (orders 1 to
 // maxOrder, `paths` each): per point the error beyond 4 standard errors relative to the
-// brightest channel of the estimate or `floor`; returns them sorted, printing those over 10%.
-inline std::vector<double> irradianceErrors(const atmosphere::ReferenceAtmosphere& reference, const std::vector<Query>& queries,
+// brightest channel of the estimate or `floor`; printing those over 10%.
+inline Percentiles irradianceErrors(const atmosphere::ReferenceAtmosphere& reference, const std::vector<Query>& queries,
                                             const std::vector<glm::dvec3>& table, int maxOrder, int paths, double floor) {
     std::vector<double> errors;
     for (size_t i = 0; i < queries.size(); ++i) {
@@ -118,8 +128,7 @@ inline std::vector<double> irradianceErrors(const atmosphere::ReferenceAtmospher
                         queries[i].position.y - reference.parameters().earthRadius, queries[i].sunDir.y, table[i].r, table[i].g, table[i].b,
                         e.mean.r, e.mean.g, e.mean.b, e.standardError.r, e.standardError.g, e.standardError.b);
     }
-    std::sort(errors.begin(), errors.end());
-    return errors;
+    return percentiles(errors);
 }
 
 // Points from the ground to 1000 km (above the atmosphere), looking every 15 degrees from the
@@ -187,8 +196,8 @@ inline HighOrderErrors highOrderErrors(const atmosphere::ReferenceAtmosphere& re
                         set.coordinates[i].altitude, set.coordinates[i].cosView, set.coordinates[i].cosSun, set.coordinates[i].cosSunView, length,
                         table[i].r, table[i].g, table[i].b, e.mean.r, e.mean.g, e.mean.b);
     }
-    std::sort(errors.begin(), errors.end());
-    return {errors[errors.size() / 2], errors[errors.size() * 9 / 10], largest};
+    const Percentiles all = percentiles(errors);
+    return {all.median, all.ninetieth, largest};
 }
 
 // The largest channel error relative to the brightest channel of `expected`, or to `floor`
