@@ -33,6 +33,37 @@ struct FrameConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(FrameConstants);
 
+// terrain/*: the terrain's height field and one clipmap level (src/terrain/Terrain.h), lengths in metres.
+struct TerrainConstants {
+    float4 field;    // x: height-field sample spacing; y: samples per side; z: 1 / samples per side; w: Earth radius
+    float4 level;    // xy: the level's grid origin (x, z); z: its vertex spacing; w: its height-field mip
+    float4 coarser;  // x: the next coarser level's spacing; y: its mip; z: cells over which vertices morph
+                     // into the coarser level at the outer edge (0: no coarser level); w: unused
+    uint4 grid;      // x: cells per side of a level; y: the level's index; z: material view (0 shaded,
+                     // 1 albedo, 2 normals, 3 levels); w: atmosphere off (1: constant sky light)
+};
+FIRMAMENT_CONSTANT_BUFFER(TerrainConstants);
+
+// shadows/*: the cascaded shadow maps (src/shadows/CascadedShadowMaps.h), for the passes that
+// read them (terrain now; light shafts later). Cascade i covers view depths [split i, split i+1].
+struct ShadowConstants {
+    float4x4 worldToShadow[8];  // world to (u, v, depth) of cascade i: u, v in [0, 1], depth in [0, 1]
+    float4 splits[3];           // view-space depth of the cascades' edges: split i is component i % 4
+                                // of splits[i / 4]; 9 values for 8 cascades
+    float4 texelWorldSize[2];   // the world size of one texel of cascade i, component i % 4 of [i / 4]
+    float4 cameraForward;       // xyz: the camera's forward unit vector (view depth = dot(p - camera, this))
+    uint4 mode;                 // x: cascade count; y: smooth shadows (5-tap PCF); z: best cascade
+                                // search; w: show cascades (tint)
+    float4 map;                 // x: resolution (texels); y: 1 / resolution; z: depth bias; w: normal offset (texels)
+};
+FIRMAMENT_CONSTANT_BUFFER(ShadowConstants);
+
+// shadows/cascade_depth.hlsl: the cascade a depth pass draws into.
+struct ShadowCasterConstants {
+    float4x4 worldToClip;  // the cascade's orthographic view-projection
+};
+FIRMAMENT_CONSTANT_BUFFER(ShadowCasterConstants);
+
 // atmosphere/*: the physical model (src/atmosphere/AtmosphereParameters.h), lengths in metres.
 struct AtmosphereConstants {
     float4 earth;               // x: Earth radius; y: atmosphere height; z: radius of its top; w: unused

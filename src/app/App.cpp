@@ -8,6 +8,8 @@
 #include "core/SettingsJson.h"
 #include "gpu/PrecompiledShaders.h"
 #include "gpu/SourceShaderCompilers.h"
+#include "terrain/HeightFieldFile.h"
+#include "terrain/TerrainSurface.h"
 #include "FirmamentVersion.h"
 
 #include <cmath>
@@ -90,6 +92,9 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
       frameConstantBuffer_(device_.device()),
       orientationGrid_(device_.device()),
       atmosphere_(device_.device(), tableStorage(options_)),
+      terrain_(device_.device(), loadOrGenerateHeightField(TerrainGeneratorParameters{}, tableStorage(options_).cacheFolder),
+               AtmosphereParameters{}.earthRadius),
+      shadows_(device_.device()),
       toneMapping_(device_.device()),
       flight_(std::move(flight)) {
     log::info("device: " + device_.describe());
@@ -275,9 +280,37 @@ void App::update() {
         fly(state_.camera, state_.sun, state_.flight, input, dt);
         if (state_.atmosphere.animateSun) animateSun(state_.sun, dt);
     }
+    keepCameraAboveGround();
     constexpr double kRecordPeriodSeconds = 0.1;
     if (options_.recordFlight && (recording_.size() == 0 || now >= recording_.duration() + kRecordPeriodSeconds))
         recording_.add(now, state_.camera, state_.sun);
+}
+
+// Document 000's sample keeps the camera at least 100 m above the terrain (terrain.cameraClearance).
+void App::keepCameraAboveGround() {
+    if (!state_.terrain.enabled || state_.terrain.cameraClearance <= 0.0f) return;
+    const glm::dvec3 p = state_.camera.position;
+    const double ground = terrain_.groundHeight(p.x, p.z) - earthDrop(p.x, p.z, AtmosphereParameters{}.earthRadius);
+    const double lowest = ground + state_.terrain.cameraClearance;
+    if (p.y < lowest) state_.camera.position.y = static_cast<float>(lowest);
+}
+
+// The shadow cascades (the terrain is their only caster for now), then the lit terrain.
+void App::renderTerrain(ID3D11DeviceContext* context) {
+    terrain_.place(glm::dvec3(state_.camera.position));
+    const glm::dvec3 toSun = glm::dvec3(state_.sun.direction());
+    // Casters may stand as far towards the sun as the highest peak can be seen above the sun's
+    // elevation, within 200 km.
+    const double reach = std::min((terrain_.maxAltitude() - terrain_.minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
+    shadows_.update(context, state_.camera, static_cast<double>(width_) / height_, toSun, state_.shadows, reach);
+    if (!shadows_.cascades().empty()) {
+        auto pass = profiler_.scope("Shadow cascades");
+        shadows_.render(context, [&](ID3D11Buffer* caster) { terrain_.renderDepth(context, shaders_, caster); });
+    }
+    auto pass = profiler_.scope("Terrain");
+    const GroundLighting lighting = atmosphere_.groundLighting(context, state_.atmosphere);
+    terrain_.render(context, shaders_, frameConstantBuffer_.get(), lighting, shadows_.inputs(), state_.terrain, hdrFrame_.rtv.Get(),
+                    depth_.dsv.Get(), width_, height_);
 }
 
 gpu::FrameConstants App::frameConstants() const {
@@ -319,6 +352,7 @@ void App::renderFrame(bool drawGui) {
         else
             orientationGrid_.render(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), width_, height_);
     }
+    if (state_.terrain.enabled) renderTerrain(context);
     if (scattering) {
         auto pass = profiler_.scope("Light scattering");
         atmosphere_.render(context, shaders_, state_.atmosphere, frameConstantBuffer_.get(), hdrFrame_, depth_.srv.Get());

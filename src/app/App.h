@@ -19,6 +19,8 @@
 #include "input/XInputPads.h"
 #include "postfx/ToneMapping.h"
 #include "scene/OrientationGridPass.h"
+#include "shadows/CascadedShadowMaps.h"
+#include "terrain/Terrain.h"
 #include "ui/FrameTimeHistory.h"
 #include "ui/Overlay.h"
 
@@ -37,6 +39,8 @@ private:
     void update();
     void renderFrame(bool drawGui);
     void captureFrame();
+    void renderTerrain(ID3D11DeviceContext* context);
+    void keepCameraAboveGround();
     void printTimings();
     void onKey(WPARAM key);
     void onInput(UINT message, WPARAM wParam, LPARAM lParam);
@@ -60,6 +64,8 @@ private:
     ConstantBuffer<gpu::FrameConstants> frameConstantBuffer_;
     OrientationGridPass orientationGrid_;
     Atmosphere atmosphere_;
+    Terrain terrain_;
+    CascadedShadowMaps shadows_;
     ToneMapping toneMapping_;
     std::unique_ptr<Overlay> overlay_;
 

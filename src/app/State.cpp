@@ -19,6 +19,8 @@ std::vector<SettingsSection> State::sections() {
             {"flight", [this](SettingsVisitor& v) { flight.visit(v); }},
             {"devices", [this](SettingsVisitor& v) { devices.visit(v); }},
             {"atmosphere", [this](SettingsVisitor& v) { atmosphere.visit(v); }},
+            {"terrain", [this](SettingsVisitor& v) { terrain.visit(v); }},
+            {"shadows", [this](SettingsVisitor& v) { shadows.visit(v); }},
             {"toneMapping", [this](SettingsVisitor& v) { toneMapping.visit(v); }},
             {"shaders", [this](SettingsVisitor& v) { shaders.visit(v); }},
             {"ui", [this](SettingsVisitor& v) { ui.visit(v); }}};

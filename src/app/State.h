@@ -12,6 +12,8 @@
 #include "input/HidReports.h"
 #include "postfx/ToneMappingSettings.h"
 #include "scene/OrientationGridPass.h"
+#include "shadows/ShadowSettings.h"
+#include "terrain/TerrainSettings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -65,6 +67,8 @@ struct State {
     FlightSettings flight;
     DeviceSettings devices;
     AtmosphereSettings atmosphere;
+    TerrainSettings terrain;
+    ShadowSettings shadows;
     ToneMappingSettings toneMapping;
     ShaderSettings shaders;
     UiSettings ui;

@@ -21,7 +21,7 @@ void copyFrame(ID3D11Device* device, ID3D11DeviceContext* context, const Texture
 }  // namespace
 
 Atmosphere::Atmosphere(ID3D11Device* device, TableStorage storage)
-    : device_(device), storage_(std::move(storage)), pass_(device), brunetonPass_(device) {}
+    : device_(device), storage_(std::move(storage)), pass_(device), brunetonPass_(device), groundAtmosphere_(device), groundBruneton_(device) {}
 
 // Starts new tables when the key changed (loading them from the cache when it holds them),
 // advances them by one unit (or all), and when complete caches, exports and uses them.
@@ -109,6 +109,27 @@ void Atmosphere::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, co
             bruneton(BrunetonView::DifferenceFromOther, 0, otherCopy_.srv.Get());
             break;
     }
+}
+
+GroundLighting Atmosphere::groundLighting(ID3D11DeviceContext* context, const AtmosphereSettings& settings) {
+    GroundLighting g;
+    if (!settings.enabled || !ready(settings)) return g;
+    const bool yusov = settings.comparison != ModelComparison::None || settings.model == AtmosphereModel::Yusov2013;
+    if (yusov) {
+        groundAtmosphere_.update(context, yusov_.current->parameters().constants());
+        g.model = GroundLightingModel::Yusov2013;
+        g.sunTransmittance = yusov_.current->tables().netDensity.srv.Get();
+        g.skyIrradiance = yusov_.current->tables().ambientLight.srv.Get();
+    } else {
+        groundAtmosphere_.update(context, bruneton_.current->parameters().physics.constants());
+        groundBruneton_.update(context, bruneton_.current->parameters().constants());
+        g.model = GroundLightingModel::Bruneton2008;
+        g.bruneton = groundBruneton_.get();
+        g.sunTransmittance = bruneton_.current->tables().transmittance.srv.Get();
+        g.skyIrradiance = bruneton_.current->tables().irradiance.srv.Get();
+    }
+    g.atmosphere = groundAtmosphere_.get();
+    return g;
 }
 
 std::optional<double> Atmosphere::recomputeProgress() const {

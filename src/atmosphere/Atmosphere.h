@@ -7,6 +7,7 @@
 // first tables exist, ready() is false and the program shows the orientation grid's sky.
 // Both models' tables are cached on disk as OpenEXR (ScatteringTableFiles, BrunetonTableFiles),
 // keyed by everything that shapes them, and loaded instead of computed when a valid file is there.
+#include "atmosphere/GroundLighting.h"
 #include "atmosphere/ScatteringPass.h"
 #include "atmosphere/ScatteringPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonPass.h"
@@ -36,6 +37,10 @@ public:
     void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings, ID3D11Buffer* frameConstants,
                 const Texture2D& hdrFrame, ID3D11ShaderResourceView* depth);
 
+    // The tables that light the ground (terrain) for the model drawn (the left one when comparing);
+    // GroundLightingModel::None when scattering is off or the tables are not ready.
+    GroundLighting groundLighting(ID3D11DeviceContext* context, const AtmosphereSettings& settings);
+
     // The tables the settings' model (or both, to compare) need exist.
     bool ready(const AtmosphereSettings& settings) const;
     // 0..1 while a recompute runs, nullopt otherwise.
@@ -61,6 +66,8 @@ private:
     BrunetonPass brunetonPass_;
     ModelTables<ScatteringPrecomputation> yusov_;
     ModelTables<BrunetonPrecomputation> bruneton_;
+    ConstantBuffer<gpu::AtmosphereConstants> groundAtmosphere_;  // the ground's copies of the models' constants
+    ConstantBuffer<gpu::BrunetonConstants> groundBruneton_;
     Texture2D sceneCopy_;  // the frame before the atmosphere, which the passes read
     Texture2D otherCopy_;  // the difference view: Yusov's frame
 };

@@ -42,10 +42,20 @@ std::string tableKey(const std::string& description, ShaderLibrary& shaders, std
     return hex;
 }
 
+std::string tableKey(const std::string& description) {
+    const std::uint64_t hash = fnv1a(description.data(), description.size(), 0xcbf29ce484222325ull);
+    char hex[17];
+    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
 void writeTableAtomically(const std::filesystem::path& path, const HalfRgbaImage& image, const ExrAttributes& attributes) {
     writeAtomically(path, image, attributes);
 }
 void writeTableAtomically(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes) {
+    writeAtomically(path, image, attributes);
+}
+void writeTableAtomically(const std::filesystem::path& path, const FloatImage& image, const ExrAttributes& attributes) {
     writeAtomically(path, image, attributes);
 }
 

@@ -14,10 +14,13 @@ namespace firmament {
 // and platforms, unlike std::hash) of their description and of the pre-computation shaders'
 // bytecode (an edited shader makes new tables), in hex.
 std::string tableKey(const std::string& description, ShaderLibrary& shaders, std::span<const ShaderKey> precomputeShaders);
+// The same key for data made on the CPU alone (the terrain's height field): the description's hash.
+std::string tableKey(const std::string& description);
 
 // Writes through a temporary file of this process's own, then renames it. Throws Error.
 void writeTableAtomically(const std::filesystem::path& path, const HalfRgbaImage& image, const ExrAttributes& attributes);
 void writeTableAtomically(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes);
+void writeTableAtomically(const std::filesystem::path& path, const FloatImage& image, const ExrAttributes& attributes);
 
 // Empty when the header's firmament.lut.key is `key` and the file is width x height; else why not.
 std::string checkTableHeader(const ExrAttributes& attributes, const std::string& key, int width, int height, int fileWidth, int fileHeight);

@@ -136,6 +136,47 @@ FloatExrFile readFloatExr(const std::filesystem::path& path) {
     }
 }
 
+void writeExr(const std::filesystem::path& path, const FloatImage& image, const ExrAttributes& attributes) {
+    if (image.width <= 0 || image.height <= 0 || image.values.size() != static_cast<size_t>(image.width) * image.height)
+        throw Error("writeExr: image size does not match its pixel data");
+    try {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, value] : attributes) insertAttribute(header, name, value);
+        header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+        Imf::FrameBuffer frame;
+        frame.insert("Y", Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(image.values.data())), sizeof(float),
+                                     sizeof(float) * static_cast<size_t>(image.width)));
+        Imf::OutputFile file(path.string().c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {
+        throw Error("cannot write the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
+FloatImageFile readFloatChannelExr(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile file(path.string().c_str());
+        if (!file.header().channels().findChannel("Y")) throw Error("it has no channel Y");
+        const Imath::Box2i window = file.header().dataWindow();
+        FloatImageFile out;
+        out.image.width = window.max.x - window.min.x + 1;
+        out.image.height = window.max.y - window.min.y + 1;
+        out.image.values.assign(static_cast<size_t>(out.image.width) * out.image.height, 0.0f);
+        char* base = reinterpret_cast<char*>(out.image.values.data()) -
+                     (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * out.image.width) * 4;
+        Imf::FrameBuffer frame;
+        frame.insert("Y", Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<size_t>(out.image.width)));
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        out.attributes = readAttributes(file.header());
+        return out;
+    } catch (const std::exception& e) {
+        throw Error("cannot read the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
 ExrFile readExr(const std::filesystem::path& path) {
     try {
         Imf::RgbaInputFile file(path.string().c_str());

@@ -42,9 +42,23 @@ struct FloatExrFile {
     ExrAttributes attributes;
 };
 
+// 32-bit float, one channel "Y": height fields.
+struct FloatImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> values;  // top row first
+};
+
+struct FloatImageFile {
+    FloatImage image;
+    ExrAttributes attributes;
+};
+
 void writeExr(const std::filesystem::path& path, const HalfRgbaImage& image, const ExrAttributes& attributes);
 void writeExr(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes);
 ExrFile readExr(const std::filesystem::path& path);            // throws Error
 FloatExrFile readFloatExr(const std::filesystem::path& path);  // any pixel type, converted; throws Error
+void writeExr(const std::filesystem::path& path, const FloatImage& image, const ExrAttributes& attributes);
+FloatImageFile readFloatChannelExr(const std::filesystem::path& path);  // channel "Y"; throws Error when it is missing
 
 }  // namespace firmament

@@ -29,6 +29,8 @@ void basicPanel(GuiModel& m, const std::vector<SettingsSection>& sections, GuiRe
     editSection(section(sections, "display"), {"vsync"});
     editSection(section(sections, "scene"));
     editSection(section(sections, "atmosphere"), {"enabled"});
+    editSection(section(sections, "terrain"), {"enabled"});
+    editSection(section(sections, "shadows"), {"enabled", "resolution"});
     ImGui::SeparatorText("Sun");
     editSection(section(sections, "sun"));
     editSection(section(sections, "atmosphere"), {"sunIntensity"});
@@ -49,6 +51,10 @@ void additionalPanel(GuiModel& m, const std::vector<SettingsSection>& sections, 
                                                    "ozone", "lutResolution", "animateSun"});
     if (m.state.atmosphere.customCoefficients) editSection(section(sections, "atmosphere"), {"rayleighColour", "mieColour"});
     atmosphereProgress(m);
+    ImGui::SeparatorText("Shadows");
+    editSection(section(sections, "shadows"), {"cascades", "showCascades", "smoothShadows", "bestCascadeSearch", "partitioningFactor", "distanceKm"});
+    ImGui::SeparatorText("Terrain");
+    editSection(section(sections, "terrain"), {"view", "cameraClearance"});
     ImGui::SeparatorText("Camera");
     editSection(section(sections, "camera"));
     ImGui::SeparatorText("Flight");

@@ -1,0 +1,83 @@
+#ifndef FIRMAMENT_TERRAIN_SURFACE_HLSLI
+#define FIRMAMENT_TERRAIN_SURFACE_HLSLI
+// The terrain's surface (docs/terrain.md): the height field, bilinear at the mip a grid's vertex
+// spacing calls for, plus metre-scale detail noise, on the Earth's sphere. The CPU twin is
+// src/terrain/TerrainSurface.cpp; tests/gpu/TerrainTest.cpp holds the two together.
+#include "common/shared_structures.hlsli"
+
+// Wellons' lowbias32 integer hash, as the CPU twin.
+uint hash32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+float latticeValue(int i, int j, uint octave) {
+    uint h = hash32(asuint(i) ^ hash32(asuint(j) ^ hash32(octave + 0x9e3779b9u)));
+    return float(h & 0xffffffu) / 16777215.0 * 2.0 - 1.0;
+}
+
+float quinticFade(float t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+
+float valueNoise(float2 p, uint octave) {
+    float2 f = floor(p);
+    int i = (int)f.x, j = (int)f.y;
+    float2 w = float2(quinticFade(p.x - f.x), quinticFade(p.y - f.y));
+    float top = lerp(latticeValue(i, j, octave), latticeValue(i + 1, j, octave), w.x);
+    float bottom = lerp(latticeValue(i, j + 1, octave), latticeValue(i + 1, j + 1, octave), w.x);
+    return lerp(top, bottom, w.y);
+}
+
+static const uint kDetailOctaves = 4;
+static const float kDetailLongestWavelength = 32.0;
+static const float kDetailAmplitude = 0.05;  // of the wavelength
+
+// Detail octaves a grid of vertex spacing `spacing` resolves (weight saturate(lambda / 2s - 1)).
+float detailHeight(float2 p, float spacing) {
+    float sum = 0.0;
+    float wavelength = kDetailLongestWavelength;
+    [unroll] for (uint o = 0; o < kDetailOctaves; ++o) {
+        float weight = saturate(wavelength / (2.0 * spacing) - 1.0);
+        sum += weight * kDetailAmplitude * wavelength * valueNoise(p / wavelength, o);
+        wavelength *= 0.5;
+    }
+    return sum;
+}
+
+// Bilinear between texel centres of mip `mip`, wrapping: loads, not the sampler, so that the
+// weights are full float and the CPU twin can match them.
+float heightFieldAt(TerrainConstants t, Texture2D<float> heights, float2 p, uint mip) {
+    float texelsPerSide = t.field.y / float(1u << mip);
+    float2 texel = (p / t.field.x + 0.5) / float(1u << mip) - 0.5;
+    float2 f = floor(texel);
+    float2 w = texel - f;
+    int mask = (int)texelsPerSide - 1;  // a power of two: & wraps negatives too
+    int i = (int)f.x, j = (int)f.y;
+    float h00 = heights.Load(int3(i & mask, j & mask, mip));
+    float h10 = heights.Load(int3((i + 1) & mask, j & mask, mip));
+    float h01 = heights.Load(int3(i & mask, (j + 1) & mask, mip));
+    float h11 = heights.Load(int3((i + 1) & mask, (j + 1) & mask, mip));
+    return lerp(lerp(h00, h10, w.x), lerp(h01, h11, w.x), w.y);
+}
+
+// Height above the sea-level sphere of the surface a grid of spacing `spacing` draws.
+float surfaceHeight(TerrainConstants t, Texture2D<float> heights, float2 p, float spacing, uint mip) {
+    return heightFieldAt(t, heights, p, mip) + detailHeight(p, spacing);
+}
+
+// How far the Earth's sphere (centre (0, -R, 0)) lies below the plane y = 0 at p:
+// r^2 / (R + sqrt(R^2 - r^2)), free of the cancellation of sqrt(R^2 - r^2) - R.
+float earthDrop(float2 p, float earthRadius) {
+    float r2 = dot(p, p);
+    return r2 / (earthRadius + sqrt(max(earthRadius * earthRadius - r2, 0.0)));
+}
+
+// World y of the surface point above p.
+float surfaceY(TerrainConstants t, Texture2D<float> heights, float2 p, float spacing, uint mip) {
+    return surfaceHeight(t, heights, p, spacing, mip) - earthDrop(p, t.field.w);
+}
+
+#endif

@@ -1,0 +1,128 @@
+// The terrain (docs/terrain.md): one clipmap level per draw, a regular grid of cells around the
+// camera whose vertex spacing doubles from level to level. The vertex shader places grid vertex
+// SV_VertexID on the surface; near the level's outer edge it morphs into the surface of the next
+// coarser level, so that on the edge every vertex lies on the coarser level's edge and the two
+// meet without cracks. The pixel shader shades with the height field's slopes and the detail
+// noise's, a material by slope and altitude, the sun attenuated by the atmosphere and shadowed by
+// the cascades, and the ambient sky light (document 000, "Terrain shaders").
+//   vs_main + ps_main: the HDR frame, with depth; GROUND_LIGHTING selects the tables (0, 1, 2).
+//   vs_depth: depth only, for the shadow cascades.
+#ifndef GROUND_LIGHTING
+#define GROUND_LIGHTING 0
+#endif
+#include "common/shared_structures.hlsli"
+
+cbuffer FrameBuffer : register(b0) { FrameConstants frame; };
+cbuffer AtmosphereBuffer : register(b1) { AtmosphereConstants atmosphere; };
+cbuffer BrunetonBuffer : register(b2) { BrunetonConstants bruneton; };
+cbuffer TerrainBuffer : register(b3) { TerrainConstants terrain; };
+cbuffer ShadowBuffer : register(b4) { ShadowConstants shadows; };
+cbuffer ShadowCasterBuffer : register(b5) { ShadowCasterConstants caster; };
+
+Texture2D<float> heightField : register(t0);
+Texture2D<float2> slopeField : register(t1);  // (dh/dx, dh/dz), mip-mapped
+Texture2D<float4> sunTransmittanceTable : register(t2);
+Texture2D<float4> skyIrradianceTable : register(t3);
+Texture2DArray<float> shadowMap : register(t4);
+SamplerState linearClamp : register(s0);
+SamplerState linearWrap : register(s1);
+SamplerComparisonState shadowComparison : register(s2);
+
+#include "terrain/ground_lighting.hlsli"
+#include "terrain/material.hlsli"
+#include "shadows/cascade_sampling.hlsli"
+
+// The world position of grid vertex `id` of the current level.
+float3 clipmapVertex(uint id) {
+    uint cells = terrain.grid.x;
+    uint i = id % (cells + 1), j = id / (cells + 1);
+    float spacing = terrain.level.z;
+    float2 p = terrain.level.xy + float2(i, j) * spacing;
+    float y = surfaceY(terrain, heightField, p, spacing, (uint)terrain.level.w);
+    float morphCells = terrain.coarser.z;
+    if (morphCells > 0.0) {
+        // Cells to the level's outer edge; the morph weight reaches 1 there.
+        float edge = (float)min(min(i, j), min(cells - i, cells - j));
+        float weight = saturate(1.0 - edge / morphCells);
+        if (weight > 0.0) {
+            // The coarser level's surface here: its vertices sit on even indices (the origin is
+            // on its grid), and between them its triangles interpolate linearly.
+            float coarseSpacing = terrain.coarser.x;
+            uint coarseMip = (uint)terrain.coarser.y;
+            float2 odd = float2(i & 1u, j & 1u) * spacing;
+            float coarseY;
+            if (odd.x > 0.0 && odd.y > 0.0) {
+                coarseY = 0.25 * (surfaceY(terrain, heightField, p + float2(-odd.x, -odd.y), coarseSpacing, coarseMip) +
+                                  surfaceY(terrain, heightField, p + float2(odd.x, -odd.y), coarseSpacing, coarseMip) +
+                                  surfaceY(terrain, heightField, p + float2(-odd.x, odd.y), coarseSpacing, coarseMip) +
+                                  surfaceY(terrain, heightField, p + float2(odd.x, odd.y), coarseSpacing, coarseMip));
+            } else {
+                coarseY = 0.5 * (surfaceY(terrain, heightField, p - odd, coarseSpacing, coarseMip) +
+                                 surfaceY(terrain, heightField, p + odd, coarseSpacing, coarseMip));
+            }
+            y = lerp(y, coarseY, weight);
+        }
+    }
+    return float3(p.x, y, p.y);
+}
+
+struct TerrainVertex {
+    float4 position : SV_Position;
+    float3 world : WORLD;
+};
+
+TerrainVertex vs_main(uint id : SV_VertexID) {
+    TerrainVertex v;
+    v.world = clipmapVertex(id);
+    v.position = mul(frame.viewProjection, float4(v.world, 1.0));
+    return v;
+}
+
+float4 vs_depth(uint id : SV_VertexID) : SV_Position {
+    return mul(caster.worldToClip, float4(clipmapVertex(id), 1.0));
+}
+
+// The surface normal in world space: the height field's slopes (filtered by the hardware for
+// the pixel's footprint), the detail noise's by central differences where a pixel resolves it,
+// and the curvature of the Earth (the surface is y = h - drop(x, z)).
+float3 surfaceNormal(float2 p, float footprint) {
+    float2 uv = (p / terrain.field.x + 0.5) * terrain.field.z;
+    float2 slope = slopeField.Sample(linearWrap, uv);
+    float detailSpacing = max(footprint, 0.5);
+    if (detailSpacing < kDetailLongestWavelength * 0.5) {
+        float d = 0.25;
+        slope.x += (detailHeight(p + float2(d, 0.0), detailSpacing) - detailHeight(p - float2(d, 0.0), detailSpacing)) / (2.0 * d);
+        slope.y += (detailHeight(p + float2(0.0, d), detailSpacing) - detailHeight(p - float2(0.0, d), detailSpacing)) / (2.0 * d);
+    }
+    float R = terrain.field.w;
+    float2 curvature = p / sqrt(max(R * R - dot(p, p), 1.0));  // d(drop)/dx, d(drop)/dz
+    slope -= curvature;
+    return normalize(float3(-slope.x, 1.0, -slope.y));
+}
+
+float4 ps_main(TerrainVertex input) : SV_Target {
+    float3 world = input.world;
+    float2 p = world.xz;
+    float footprint = length(fwidth(p));
+    float3 normal = surfaceNormal(p, footprint);
+    float3 up = normalize(float3(p.x, world.y + terrain.field.w, p.y));
+    float altitude = world.y + earthDrop(p, terrain.field.w);
+    float3 toSun = frame.directionToSun.xyz;
+    float steepness = 1.0 - dot(normal, up);
+    float3 albedo = terrainAlbedo(altitude, steepness, p);
+
+    float viewDepth = dot(world - frame.cameraPosition.xyz, shadows.cameraForward.xyz);
+    int cascade = -1;
+    float visibility = shadows.mode.x > 0 ? sunVisibility(world, normal, viewDepth, cascade) : 1.0;
+    if (shadows.mode.w != 0) albedo *= cascadeTint(cascade);
+
+    switch (terrain.grid.z) {
+        case 1: return float4(albedo, 1.0);
+        case 2: return float4(normal * 0.5 + 0.5, 1.0);
+        case 3: return float4(cascadeTint((int)terrain.grid.y % 8), 1.0);
+        default: break;
+    }
+    GroundLight light = groundLight(altitude, dot(up, toSun));
+    float3 radiance = lambertianRadiance(albedo, normal, up, toSun, visibility, light) * frame.sunIrradiance.rgb;
+    return float4(radiance, 1.0);
+}

@@ -1,0 +1,120 @@
+#include "shadows/CascadedShadowMaps.h"
+
+#include "gpu/Hresult.h"
+
+#include <algorithm>
+
+#include <cmath>
+
+namespace firmament {
+
+namespace {
+constexpr float kNormalOffsetTexels = 1.5f;  // receivers pushed along their normal (against acne)
+constexpr float kSlopeScaledBias = 2.0f;      // casters pushed away by their depth slope
+}  // namespace
+
+CascadedShadowMaps::CascadedShadowMaps(ID3D11Device* device) : device_(device), constantBuffer_(device), casterBuffer_(device) {
+    D3D11_SAMPLER_DESC sampler{};
+    sampler.Filter = D3D11_FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT;
+    sampler.AddressU = sampler.AddressV = sampler.AddressW = D3D11_TEXTURE_ADDRESS_CLAMP;
+    sampler.ComparisonFunc = D3D11_COMPARISON_LESS_EQUAL;
+    sampler.MaxLOD = D3D11_FLOAT32_MAX;
+    check(device->CreateSamplerState(&sampler, &comparison_), "CreateSamplerState (shadow comparison)");
+    D3D11_RASTERIZER_DESC raster{};
+    raster.FillMode = D3D11_FILL_SOLID;
+    raster.CullMode = D3D11_CULL_NONE;
+    raster.SlopeScaledDepthBias = kSlopeScaledBias;
+    raster.DepthClipEnable = FALSE;  // casters nearer the sun than the range clamp to depth 0 and still cast
+    check(device->CreateRasterizerState(&raster, &casterRaster_), "CreateRasterizerState (shadow casters)");
+    D3D11_DEPTH_STENCIL_DESC depth{};
+    depth.DepthEnable = TRUE;
+    depth.DepthWriteMask = D3D11_DEPTH_WRITE_MASK_ALL;
+    depth.DepthFunc = D3D11_COMPARISON_LESS;
+    check(device->CreateDepthStencilState(&depth, &casterDepth_), "CreateDepthStencilState (shadow casters)");
+}
+
+void CascadedShadowMaps::createMap(int resolution, int cascades) {
+    D3D11_TEXTURE2D_DESC desc{};
+    desc.Width = desc.Height = static_cast<UINT>(resolution);
+    desc.MipLevels = 1;
+    desc.ArraySize = static_cast<UINT>(cascades);
+    desc.Format = DXGI_FORMAT_R32_TYPELESS;
+    desc.SampleDesc.Count = 1;
+    desc.Usage = D3D11_USAGE_DEFAULT;
+    desc.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE;
+    map_.Reset();
+    check(device_->CreateTexture2D(&desc, nullptr, &map_), "CreateTexture2D (shadow map, " + std::to_string(resolution) + " x " +
+                                                                    std::to_string(resolution) + " x " + std::to_string(cascades) + ")");
+    slices_.assign(static_cast<size_t>(cascades), nullptr);
+    for (int i = 0; i < cascades; ++i) {
+        D3D11_DEPTH_STENCIL_VIEW_DESC dsv{};
+        dsv.Format = DXGI_FORMAT_D32_FLOAT;
+        dsv.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2DARRAY;
+        dsv.Texture2DArray.FirstArraySlice = static_cast<UINT>(i);
+        dsv.Texture2DArray.ArraySize = 1;
+        check(device_->CreateDepthStencilView(map_.Get(), &dsv, &slices_[static_cast<size_t>(i)]), "CreateDepthStencilView (shadow cascade)");
+    }
+    D3D11_SHADER_RESOURCE_VIEW_DESC srv{};
+    srv.Format = DXGI_FORMAT_R32_FLOAT;
+    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
+    srv.Texture2DArray.MipLevels = 1;
+    srv.Texture2DArray.ArraySize = static_cast<UINT>(cascades);
+    srv_.Reset();
+    check(device_->CreateShaderResourceView(map_.Get(), &srv, &srv_), "CreateShaderResourceView (shadow map)");
+    resolution_ = resolution;
+    sliceCount_ = cascades;
+}
+
+void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& camera, double aspectRatio, glm::dvec3 directionToSun,
+                                const ShadowSettings& settings, double casterReach) {
+    cascades_.clear();
+    constants_ = {};
+    if (settings.enabled) {
+        const int count = std::clamp(settings.cascades, 1, kMaxCascades);
+        const int resolution = shadowMapTexels(settings.resolution);
+        if (resolution != resolution_ || count != sliceCount_) createMap(resolution, count);
+        CascadeCamera view;
+        view.position = camera.position;
+        view.forward = camera.forward();
+        view.tanHalfFovY = std::tan(glm::radians(static_cast<double>(camera.verticalFovDegrees)) * 0.5);
+        view.aspectRatio = aspectRatio;
+        const double reach = std::min(static_cast<double>(settings.distanceKm) * 1000.0, static_cast<double>(camera.farPlane));
+        const std::vector<double> splits = cascadeSplits(camera.nearPlane, reach, count, settings.partitioningFactor);
+        const glm::dmat4 lightView = lightViewMatrix(directionToSun);
+        for (int i = 0; i < count; ++i) {
+            cascades_.push_back(fitCascade(view, splits[static_cast<size_t>(i)], splits[static_cast<size_t>(i) + 1], lightView, resolution, casterReach));
+            constants_.worldToShadow[i] = glm::mat4(cascades_.back().worldToShadow);
+            constants_.texelWorldSize[i / 4][i % 4] = static_cast<float>(cascades_.back().texelWorldSize);
+        }
+        for (int i = 0; i <= count; ++i) constants_.splits[i / 4][i % 4] = static_cast<float>(splits[static_cast<size_t>(i)]);
+        constants_.cameraForward = glm::vec4(glm::vec3(view.forward), 0.0f);
+        constants_.mode = glm::uvec4(static_cast<unsigned>(count), settings.smoothShadows ? 1u : 0u, settings.bestCascadeSearch ? 1u : 0u,
+                                     settings.showCascades ? 1u : 0u);
+        constants_.map = glm::vec4(static_cast<float>(resolution), 1.0f / static_cast<float>(resolution), 0.0f, kNormalOffsetTexels);
+    }
+    constantBuffer_.update(context, constants_);
+}
+
+void CascadedShadowMaps::render(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster)>& drawCasters) {
+    if (cascades_.empty()) return;
+    D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(resolution_), static_cast<float>(resolution_), 0.0f, 1.0f};
+    context->RSSetViewports(1, &viewport);
+    context->RSSetState(casterRaster_.Get());
+    context->OMSetDepthStencilState(casterDepth_.Get(), 0);
+    for (size_t i = 0; i < cascades_.size(); ++i) {
+        ID3D11DepthStencilView* slice = slices_[i].Get();
+        context->ClearDepthStencilView(slice, D3D11_CLEAR_DEPTH, 1.0f, 0);
+        context->OMSetRenderTargets(0, nullptr, slice);
+        casterBuffer_.update(context, gpu::ShadowCasterConstants{glm::mat4(cascades_[i].worldToClip)});
+        drawCasters(casterBuffer_.get());
+    }
+    context->OMSetRenderTargets(0, nullptr, nullptr);
+    context->RSSetState(nullptr);
+    context->OMSetDepthStencilState(nullptr, 0);
+}
+
+ShadowInputs CascadedShadowMaps::inputs() const {
+    return {constantBuffer_.get(), cascades_.empty() ? nullptr : srv_.Get(), comparison_.Get()};
+}
+
+}  // namespace firmament

@@ -1,0 +1,57 @@
+#pragma once
+// The cascaded shadow maps technique (docs/shadows.md): owns the depth texture array (one
+// slice per cascade), the comparison sampler and the constants the readers bind; fits the
+// cascades to the camera each frame (CascadeSplits.h) and has the casters draw their depth into
+// each. The cascades and their matrices stay readable (cascades()) for the light shafts.
+#include "core/Camera.h"
+#include "gpu/ConstantBuffer.h"
+#include "gpu/SharedStructures.h"
+#include "gpu/Texture.h"
+#include "shadows/CascadeSplits.h"
+#include "shadows/ShadowInputs.h"
+#include "shadows/ShadowSettings.h"
+
+#include <d3d11.h>
+#include <wrl/client.h>
+
+#include <functional>
+#include <vector>
+
+namespace firmament {
+
+class CascadedShadowMaps {
+public:
+    explicit CascadedShadowMaps(ID3D11Device* device);
+
+    // Fits the cascades to the camera and the sun (double precision), and writes the constants.
+    // casterReach: metres towards the sun beyond each cascade's sphere that casters may stand.
+    void update(ID3D11DeviceContext* context, const Camera& camera, double aspectRatio, glm::dvec3 directionToSun,
+                const ShadowSettings& settings, double casterReach);
+    // Clears each cascade and calls drawCasters with its ShadowCasterConstants buffer, the
+    // cascade's depth target bound with its viewport and a biased, uncullled rasterizer state.
+    void render(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster)>& drawCasters);
+
+    ShadowInputs inputs() const;  // no shadows (mode.x == 0) until update() ran with shadows on
+    const std::vector<Cascade>& cascades() const { return cascades_; }
+    const gpu::ShadowConstants& constants() const { return constants_; }
+    int resolution() const { return resolution_; }
+
+private:
+    void createMap(int resolution, int cascades);
+
+    ID3D11Device* device_;
+    ComPtr<ID3D11Texture2D> map_;
+    std::vector<ComPtr<ID3D11DepthStencilView>> slices_;
+    ComPtr<ID3D11ShaderResourceView> srv_;
+    ComPtr<ID3D11SamplerState> comparison_;
+    ComPtr<ID3D11RasterizerState> casterRaster_;
+    ComPtr<ID3D11DepthStencilState> casterDepth_;
+    ConstantBuffer<gpu::ShadowConstants> constantBuffer_;
+    ConstantBuffer<gpu::ShadowCasterConstants> casterBuffer_;
+    gpu::ShadowConstants constants_{};
+    std::vector<Cascade> cascades_;
+    int resolution_ = 0;
+    int sliceCount_ = 0;
+};
+
+}  // namespace firmament

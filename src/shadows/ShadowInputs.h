@@ -1,0 +1,13 @@
+#pragma once
+// What a pass that reads the cascaded shadow maps binds (shaders/shadows/cascade_sampling.hlsli).
+#include <d3d11.h>
+
+namespace firmament {
+
+struct ShadowInputs {
+    ID3D11Buffer* constants = nullptr;           // ShadowConstants (b4); mode.x == 0: no shadows
+    ID3D11ShaderResourceView* map = nullptr;     // Texture2DArray<float>, one slice per cascade (t4)
+    ID3D11SamplerState* comparison = nullptr;    // LESS_EQUAL, bilinear (s2)
+};
+
+}  // namespace firmament

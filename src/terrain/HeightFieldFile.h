@@ -1,0 +1,22 @@
+#pragma once
+// Where the terrain's height field comes from: generated at the first run and kept in the cache
+// folder (the atmosphere's tables' folder) as a one-channel float OpenEXR file,
+// terrain-<key>-heights.exr, whose key hashes the generator's parameters. Chosen over a file in
+// media/: the generator is the source (deterministic, unit-tested), a 16 MB binary in git would
+// be a copy of it that could drift, and generating takes a few seconds once (docs/terrain.md).
+#include "terrain/HeightField.h"
+#include "terrain/TerrainGenerator.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace firmament {
+
+// Reads the cached field when it is there and valid, else generates it (logging the time) and
+// caches it. A cache that cannot be written is a warning; without a folder nothing is cached.
+HeightField loadOrGenerateHeightField(const TerrainGeneratorParameters& parameters, const std::optional<std::filesystem::path>& cacheFolder);
+
+// The cache file's name for these parameters.
+std::string heightFieldFileName(const TerrainGeneratorParameters& parameters);
+
+}  // namespace firmament

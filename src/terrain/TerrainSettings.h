@@ -1,0 +1,26 @@
+#pragma once
+// Settings of the terrain (section "terrain").
+#include "core/Settings.h"
+
+#include <array>
+#include <string_view>
+
+namespace firmament {
+
+// What the terrain's pixels show: the lit surface, or one of its inputs for inspection.
+enum class TerrainView { Shaded, Albedo, Normals, Levels };
+inline constexpr std::array<std::string_view, 4> kTerrainViewNames{"Shaded", "Albedo", "Normals", "Clipmap levels"};
+
+struct TerrainSettings {
+    bool enabled = true;
+    TerrainView view = TerrainView::Shaded;
+    float cameraClearance = 100.0f;  // metres the camera keeps above the ground (document 000's sample: 100)
+
+    void visit(SettingsVisitor& v) {
+        v.field("enabled", enabled, "Terrain");
+        v.choice("view", view, kTerrainViewNames, "Terrain view");
+        v.field("cameraClearance", cameraClearance, {0.0f, 1000.0f}, "Camera clearance above the ground (m)");
+    }
+};
+
+}  // namespace firmament

@@ -1,0 +1,28 @@
+#pragma once
+// The terrain's surface as the shaders build it (shaders/terrain/surface.hlsli), on the CPU: the
+// height field's bilinear height at a mip chosen by the level's vertex spacing, plus metre-scale
+// detail noise that fades out on levels too coarse to carry it, lowered by the Earth's curvature.
+// Used to keep the camera above the ground, and by the tests as the shaders' reference.
+#include "terrain/HeightField.h"
+
+namespace firmament {
+
+// Detail noise: octaves of value noise of wavelengths 32, 16, 8 and 4 m, amplitude 5% of the
+// wavelength, each weighted by saturate(wavelength / (2 spacing) - 1) so that a grid of vertex
+// spacing `spacing` carries only the octaves it resolves (4 or more vertices to a wavelength).
+inline constexpr int kDetailOctaves = 4;
+inline constexpr double kDetailLongestWavelength = 32.0;
+inline constexpr double kDetailAmplitude = 0.05;  // of the wavelength
+double detailHeight(double x, double z, double spacing);
+
+// The height-field mip a grid of this vertex spacing samples: one texel per vertex or finer.
+int heightMipFor(double spacing, const HeightField& field);
+
+// Height above the sea-level sphere of the surface a grid of vertex spacing `spacing` draws.
+double surfaceHeight(const HeightField& field, double x, double z, double spacing);
+
+// How far the sphere of radius R through the origin (centre (0, -R, 0)) lies below the plane
+// y = 0 at horizontal distance sqrt(x^2 + z^2): r^2 / (R + sqrt(R^2 - r^2)), free of cancellation.
+double earthDrop(double x, double z, double earthRadius);
+
+}  // namespace firmament
