@@ -46,7 +46,10 @@ Cascade fitCascade(const CascadeCamera& camera, double nearDepth, double farDept
     const double farOffAxis2 = k2 * farDepth * farDepth;
     c.radius = std::sqrt(farOffAxis2 + (farDepth - centreDepth) * (farDepth - centreDepth));
     c.centre = camera.position + glm::normalize(camera.forward) * centreDepth;
-    c.texelWorldSize = 2.0 * c.radius / resolution;
+    // Snapping moves the square by up to a texel: its half-width is the radius and one texel more,
+    // halfWidth = radius * resolution / (resolution - 2), a whole number (resolution / 2) of texels.
+    const double halfWidth = c.radius * resolution / (resolution - 2.0);
+    c.texelWorldSize = 2.0 * halfWidth / resolution;
 
     // Snap the centre to whole texels in light space.
     glm::dvec3 centre = glm::dvec3(lightView * glm::dvec4(c.centre, 1.0));
@@ -55,11 +58,11 @@ Cascade fitCascade(const CascadeCamera& camera, double nearDepth, double farDept
     const double zNear = centre.z - c.radius - casterReach, zFar = centre.z + c.radius;
 
     glm::dmat4 projection(0.0);  // light space to clip: x, y to [-1, 1], z to [0, 1]
-    projection[0][0] = 1.0 / c.radius;
-    projection[1][1] = 1.0 / c.radius;
+    projection[0][0] = 1.0 / halfWidth;
+    projection[1][1] = 1.0 / halfWidth;
     projection[2][2] = 1.0 / (zFar - zNear);
-    projection[3][0] = -centre.x / c.radius;
-    projection[3][1] = -centre.y / c.radius;
+    projection[3][0] = -centre.x / halfWidth;
+    projection[3][1] = -centre.y / halfWidth;
     projection[3][2] = -zNear / (zFar - zNear);
     projection[3][3] = 1.0;
     c.worldToClip = projection * lightView;

@@ -33,7 +33,7 @@ struct Cascade {
     double nearDepth = 0, farDepth = 0;  // the view-depth range it covers
     glm::dvec3 centre{};                  // of its bounding sphere, world
     double radius = 0;                    // of its bounding sphere
-    double texelWorldSize = 0;            // 2 radius / resolution
+    double texelWorldSize = 0;            // the map covers resolution texels of this size, a little more than 2 radius
     glm::dmat4 worldToClip{1.0};          // orthographic: x, y in [-1, 1], depth in [0, 1]
     glm::dmat4 worldToShadow{1.0};        // (u, v, depth): u, v in [0, 1], v down as textures are
 };
