@@ -23,6 +23,7 @@ public:
     Terrain(ID3D11Device* device, HeightField field, double earthRadius);
 
     const HeightField& heightField() const { return field_; }
+    ID3D11ShaderResourceView* heightFieldView() const { return heights_.srv.Get(); }  // R32_FLOAT, mip-mapped
     // Height above the sea-level sphere of the finest surface at (x, z).
     double groundHeight(double x, double z) const;
     // Lowest and highest surface altitude (the shadow cascades' depth range).
