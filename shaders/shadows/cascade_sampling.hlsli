@@ -2,16 +2,23 @@
 #define FIRMAMENT_SHADOWS_CASCADE_SAMPLING_HLSLI
 // Reading the cascaded shadow maps (src/shadows/CascadedShadowMaps.h): which cascade a point
 // falls in, and how much of the sun it sees. The includer declares the cbuffer `shadows`
-// (ShadowConstants), the Texture2DArray<float> `shadowMap` and the SamplerComparisonState
-// `shadowComparison` (LESS_EQUAL, bilinear: each tap is a 2x2 percentage-closer filter).
+// (ShadowConstants), the Texture2D<float> `shadowMap` (the cascades' atlas) and the
+// SamplerComparisonState `shadowComparison` (LESS_EQUAL, bilinear: each tap is a 2x2
+// percentage-closer filter).
 #include "common/shared_structures.hlsli"
 
 float vectorComponent(float4 v, uint i) { return i == 0 ? v.x : (i == 1 ? v.y : (i == 2 ? v.z : v.w)); }
 float cascadeSplit(uint i) { return vectorComponent(shadows.splits[i / 4], i % 4); }
 float cascadeTexelWorldSize(uint i) { return vectorComponent(shadows.texelWorldSize[i / 4], i % 4); }
 
+// (u, v, depth) in the cascade's own tile.
 float3 shadowMapCoordinates(uint cascade, float3 world) {
     return mul(shadows.worldToShadow[cascade], float4(world, 1.0)).xyz;
+}
+
+// From a cascade's tile to the atlas.
+float2 atlasCoordinates(uint cascade, float2 uv) {
+    return (uv + float2(cascade % 4, cascade / 4)) * shadows.atlas.zw;
 }
 
 // Inside the cascade with room for the 5-tap filter's footprint.
@@ -42,14 +49,14 @@ float sunVisibility(float3 world, float3 normal, float viewDepth, out int cascad
     float3 offsetWorld = world + normal * (shadows.map.w * cascadeTexelWorldSize((uint)cascade));
     float3 uvz = shadowMapCoordinates((uint)cascade, offsetWorld);
     float depth = uvz.z - shadows.map.z;
-    float slice = (float)cascade;
-    float visibility = shadowMap.SampleCmpLevelZero(shadowComparison, float3(uvz.xy, slice), depth);
+    float2 uv = atlasCoordinates((uint)cascade, uvz.xy);
+    float visibility = shadowMap.SampleCmpLevelZero(shadowComparison, uv, depth);
     if (shadows.mode.y != 0) {  // smooth shadows: four more taps a texel away
-        float t = shadows.map.y;
-        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, float3(uvz.xy + float2(t, 0.0), slice), depth);
-        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, float3(uvz.xy - float2(t, 0.0), slice), depth);
-        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, float3(uvz.xy + float2(0.0, t), slice), depth);
-        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, float3(uvz.xy - float2(0.0, t), slice), depth);
+        float2 t = shadows.map.y * shadows.atlas.zw;
+        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, uv + float2(t.x, 0.0), depth);
+        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, uv - float2(t.x, 0.0), depth);
+        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, uv + float2(0.0, t.y), depth);
+        visibility += shadowMap.SampleCmpLevelZero(shadowComparison, uv - float2(0.0, t.y), depth);
         visibility *= 0.2;
     }
     return visibility;

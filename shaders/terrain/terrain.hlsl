@@ -23,7 +23,7 @@ Texture2D<float> heightField : register(t0);
 Texture2D<float2> slopeField : register(t1);  // (dh/dx, dh/dz), mip-mapped
 Texture2D<float4> sunTransmittanceTable : register(t2);
 Texture2D<float4> skyIrradianceTable : register(t3);
-Texture2DArray<float> shadowMap : register(t4);
+Texture2D<float> shadowMap : register(t4);
 SamplerState linearClamp : register(s0);
 SamplerState linearWrap : register(s1);
 SamplerComparisonState shadowComparison : register(s2);

@@ -33,36 +33,36 @@ CascadedShadowMaps::CascadedShadowMaps(ID3D11Device* device) : device_(device), 
     check(device->CreateDepthStencilState(&depth, &casterDepth_), "CreateDepthStencilState (shadow casters)");
 }
 
+// The atlas: up to four cascades to a row. One texture, not an array: Wine's Direct3D compares
+// against slice 0 whatever the array index (docs/shadows.md), and an atlas is as fast.
 void CascadedShadowMaps::createMap(int resolution, int cascades) {
+    columns_ = std::min(cascades, kAtlasColumns);
+    rows_ = (cascades + kAtlasColumns - 1) / kAtlasColumns;
     D3D11_TEXTURE2D_DESC desc{};
-    desc.Width = desc.Height = static_cast<UINT>(resolution);
+    desc.Width = static_cast<UINT>(resolution * columns_);
+    desc.Height = static_cast<UINT>(resolution * rows_);
     desc.MipLevels = 1;
-    desc.ArraySize = static_cast<UINT>(cascades);
+    desc.ArraySize = 1;
     desc.Format = DXGI_FORMAT_R32_TYPELESS;
     desc.SampleDesc.Count = 1;
     desc.Usage = D3D11_USAGE_DEFAULT;
     desc.BindFlags = D3D11_BIND_DEPTH_STENCIL | D3D11_BIND_SHADER_RESOURCE;
     map_.Reset();
-    check(device_->CreateTexture2D(&desc, nullptr, &map_), "CreateTexture2D (shadow map, " + std::to_string(resolution) + " x " +
-                                                                    std::to_string(resolution) + " x " + std::to_string(cascades) + ")");
-    slices_.assign(static_cast<size_t>(cascades), nullptr);
-    for (int i = 0; i < cascades; ++i) {
-        D3D11_DEPTH_STENCIL_VIEW_DESC dsv{};
-        dsv.Format = DXGI_FORMAT_D32_FLOAT;
-        dsv.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2DARRAY;
-        dsv.Texture2DArray.FirstArraySlice = static_cast<UINT>(i);
-        dsv.Texture2DArray.ArraySize = 1;
-        check(device_->CreateDepthStencilView(map_.Get(), &dsv, &slices_[static_cast<size_t>(i)]), "CreateDepthStencilView (shadow cascade)");
-    }
+    dsv_.Reset();
+    srv_.Reset();
+    check(device_->CreateTexture2D(&desc, nullptr, &map_), "CreateTexture2D (shadow map atlas, " + std::to_string(cascades) +
+                                                                    " cascades of " + std::to_string(resolution) + " x " + std::to_string(resolution) + ")");
+    D3D11_DEPTH_STENCIL_VIEW_DESC dsv{};
+    dsv.Format = DXGI_FORMAT_D32_FLOAT;
+    dsv.ViewDimension = D3D11_DSV_DIMENSION_TEXTURE2D;
+    check(device_->CreateDepthStencilView(map_.Get(), &dsv, &dsv_), "CreateDepthStencilView (shadow map atlas)");
     D3D11_SHADER_RESOURCE_VIEW_DESC srv{};
     srv.Format = DXGI_FORMAT_R32_FLOAT;
-    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
-    srv.Texture2DArray.MipLevels = 1;
-    srv.Texture2DArray.ArraySize = static_cast<UINT>(cascades);
-    srv_.Reset();
-    check(device_->CreateShaderResourceView(map_.Get(), &srv, &srv_), "CreateShaderResourceView (shadow map)");
+    srv.ViewDimension = D3D11_SRV_DIMENSION_TEXTURE2D;
+    srv.Texture2D.MipLevels = 1;
+    check(device_->CreateShaderResourceView(map_.Get(), &srv, &srv_), "CreateShaderResourceView (shadow map atlas)");
     resolution_ = resolution;
-    sliceCount_ = cascades;
+    cascadeCount_ = cascades;
 }
 
 void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& camera, double aspectRatio, glm::dvec3 directionToSun,
@@ -72,7 +72,7 @@ void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& came
     if (settings.enabled) {
         const int count = std::clamp(settings.cascades, 1, kMaxCascades);
         const int resolution = shadowMapTexels(settings.resolution);
-        if (resolution != resolution_ || count != sliceCount_) createMap(resolution, count);
+        if (resolution != resolution_ || count != cascadeCount_) createMap(resolution, count);
         CascadeCamera view;
         view.position = camera.position;
         view.forward = camera.forward();
@@ -91,20 +91,23 @@ void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& came
         constants_.mode = glm::uvec4(static_cast<unsigned>(count), settings.smoothShadows ? 1u : 0u, settings.bestCascadeSearch ? 1u : 0u,
                                      settings.showCascades ? 1u : 0u);
         constants_.map = glm::vec4(static_cast<float>(resolution), 1.0f / static_cast<float>(resolution), 0.0f, kNormalOffsetTexels);
+        constants_.atlas = glm::vec4(static_cast<float>(columns_), static_cast<float>(rows_), 1.0f / static_cast<float>(columns_),
+                                     1.0f / static_cast<float>(rows_));
     }
     constantBuffer_.update(context, constants_);
 }
 
 void CascadedShadowMaps::render(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster)>& drawCasters) {
     if (cascades_.empty()) return;
-    D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(resolution_), static_cast<float>(resolution_), 0.0f, 1.0f};
-    context->RSSetViewports(1, &viewport);
     context->RSSetState(casterRaster_.Get());
     context->OMSetDepthStencilState(casterDepth_.Get(), 0);
+    context->ClearDepthStencilView(dsv_.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+    context->OMSetRenderTargets(0, nullptr, dsv_.Get());
     for (size_t i = 0; i < cascades_.size(); ++i) {
-        ID3D11DepthStencilView* slice = slices_[i].Get();
-        context->ClearDepthStencilView(slice, D3D11_CLEAR_DEPTH, 1.0f, 0);
-        context->OMSetRenderTargets(0, nullptr, slice);
+        // The cascade's tile; clipping to the clip volume keeps each cascade inside its own.
+        const float size = static_cast<float>(resolution_);
+        D3D11_VIEWPORT viewport{size * static_cast<float>(i % kAtlasColumns), size * static_cast<float>(i / kAtlasColumns), size, size, 0.0f, 1.0f};
+        context->RSSetViewports(1, &viewport);
         casterBuffer_.update(context, gpu::ShadowCasterConstants{glm::mat4(cascades_[i].worldToClip)});
         drawCasters(casterBuffer_.get());
     }

@@ -1,6 +1,6 @@
 #pragma once
-// The cascaded shadow maps technique (docs/shadows.md): owns the depth texture array (one
-// slice per cascade), the comparison sampler and the constants the readers bind; fits the
+// The cascaded shadow maps technique (docs/shadows.md): owns the depth atlas (one square tile
+// per cascade, four to a row), the comparison sampler and the constants the readers bind; fits the
 // cascades to the camera each frame (CascadeSplits.h) and has the casters draw their depth into
 // each. The cascades and their matrices stay readable (cascades()) for the light shafts.
 #include "core/Camera.h"
@@ -19,6 +19,8 @@
 
 namespace firmament {
 
+inline constexpr int kAtlasColumns = 4;
+
 class CascadedShadowMaps {
 public:
     explicit CascadedShadowMaps(ID3D11Device* device);
@@ -27,8 +29,9 @@ public:
     // casterReach: metres towards the sun beyond each cascade's sphere that casters may stand.
     void update(ID3D11DeviceContext* context, const Camera& camera, double aspectRatio, glm::dvec3 directionToSun,
                 const ShadowSettings& settings, double casterReach);
-    // Clears each cascade and calls drawCasters with its ShadowCasterConstants buffer, the
-    // cascade's depth target bound with its viewport and a biased, uncullled rasterizer state.
+    // Clears the atlas and calls drawCasters for each cascade with its ShadowCasterConstants
+    // buffer, the atlas bound as the depth target, the cascade's tile as the viewport, and a
+    // biased, unculled rasterizer state.
     void render(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster)>& drawCasters);
 
     ShadowInputs inputs() const;  // no shadows (mode.x == 0) until update() ran with shadows on
@@ -41,7 +44,7 @@ private:
 
     ID3D11Device* device_;
     ComPtr<ID3D11Texture2D> map_;
-    std::vector<ComPtr<ID3D11DepthStencilView>> slices_;
+    ComPtr<ID3D11DepthStencilView> dsv_;
     ComPtr<ID3D11ShaderResourceView> srv_;
     ComPtr<ID3D11SamplerState> comparison_;
     ComPtr<ID3D11RasterizerState> casterRaster_;
@@ -50,8 +53,9 @@ private:
     ConstantBuffer<gpu::ShadowCasterConstants> casterBuffer_;
     gpu::ShadowConstants constants_{};
     std::vector<Cascade> cascades_;
-    int resolution_ = 0;
-    int sliceCount_ = 0;
+    int resolution_ = 0;  // of one cascade
+    int cascadeCount_ = 0;
+    int columns_ = 1, rows_ = 1;  // of the atlas's tiles
 };
 
 }  // namespace firmament
