@@ -1,0 +1,157 @@
+// The terrain in frames firmament.exe captures: the clipmap's levels meet without cracks (no
+// background pixel below the horizon), nothing is NaN or Inf at any sun angle with either
+// atmosphere model, and the terrain's views and the cascades' tint change the picture.
+#include "core/ExrImage.h"
+#include "support/Process.h"
+#include "support/TestPaths.h"
+
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace firmament::test {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+constexpr double kEarthRadius = 6360e3;
+constexpr float kBackground[3] = {0.02f, 0.025f, 0.035f};  // the HDR frame's clear value (src/app/App.cpp)
+
+std::filesystem::path scratch(const std::string& name) {
+    const auto folder = std::filesystem::temp_directory_path() / ("firmament-terrain-" + name);
+    std::filesystem::remove_all(folder);
+    return folder;
+}
+
+// One headless frame with the given --set assignments; its HDR capture.
+ExrFile captureFrame(const std::string& name, const std::vector<std::wstring>& settings) {
+    const auto folder = scratch(name);
+    std::vector<std::wstring> arguments{L"--headless", L"--frames", L"1", L"--resolution",
+                                        std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight)};
+    for (const auto& s : settings) arguments.insert(arguments.end(), {L"--set", s});
+    arguments.insert(arguments.end(), {L"--capture", (folder / "frame.png").wstring()});
+    const ProcessResult run = runProcess(firmamentExe(), arguments);
+    EXPECT_EQ(run.exitCode, 0u) << run.output;
+    ExrFile file = readExr(folder / "frame.exr");
+    std::filesystem::remove_all(folder);
+    return file;
+}
+
+glm::vec3 pixel(const ExrFile& file, int x, int y) {
+    glm::vec3 value;
+    for (int ch = 0; ch < 3; ++ch) {
+        Imath::half h;
+        h.setBits(file.image.halfBits[(static_cast<size_t>(y) * file.image.width + x) * 4 + ch]);
+        value[ch] = static_cast<float>(h);
+    }
+    return value;
+}
+
+bool isBackground(glm::vec3 v) {
+    for (int ch = 0; ch < 3; ++ch)
+        if (std::abs(v[ch] - kBackground[ch]) > 1e-4f) return false;
+    return true;
+}
+
+struct View {
+    const char* name;
+    std::vector<std::wstring> camera;
+};
+
+// Over the clear colour, without the atmosphere or the grid: every pixel whose ray points below
+// the horizon (the geometric dip for the camera's altitude, and half a degree more) must be
+// terrain. The terrain stands on or above the sea-level sphere and its coarsest level reaches
+// 524 km, beyond the horizon from up to 21 km, so a background pixel there is a crack.
+TEST(TerrainCapture, LevelsMeetWithoutCracks) {
+    const std::vector<View> views = {
+        {"ground", {L"camera.position=0,0,0", L"camera.pitch=-30"}},  // pushed up to 100 m above the ground
+        {"valley", {L"camera.position=5000,1500,-3000", L"camera.yaw=40", L"camera.pitch=-10"}},
+        {"default", {L"camera.position=0,8000,0", L"camera.pitch=-20"}},
+        {"far", {L"camera.position=-12345,300,777", L"camera.yaw=-160", L"camera.pitch=-4"}},
+        {"high", {L"camera.position=30000,20000,-50000", L"camera.yaw=120", L"camera.pitch=-45"}},
+    };
+    for (const View& v : views) {
+        std::vector<std::wstring> settings{L"atmosphere.enabled=off", L"scene.orientationGrid=off", L"shadows.enabled=off"};
+        settings.insert(settings.end(), v.camera.begin(), v.camera.end());
+        const ExrFile file = captureFrame(std::string("cracks-") + v.name, settings);
+        const glm::mat4 view = std::get<glm::mat4>(file.attributes.at("firmament.view"));
+        const glm::vec3 camera = glm::vec3(glm::inverse(view)[3]);
+        glm::mat4 rotation = view;
+        rotation[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        const glm::mat4 clipToDirection = glm::inverse(std::get<glm::mat4>(file.attributes.at("firmament.projection")) * rotation);
+        const double dip = std::sqrt(2.0 * std::max(static_cast<double>(camera.y), 1.0) / kEarthRadius) + glm::radians(0.5);
+        int below = 0, cracks = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const glm::vec4 ndc((x + 0.5f) / kWidth * 2.0f - 1.0f, 1.0f - (y + 0.5f) / kHeight * 2.0f, 1.0f, 1.0f);
+                const glm::vec4 farPoint = clipToDirection * ndc;
+                const glm::dvec3 direction = glm::normalize(glm::dvec3(farPoint) / static_cast<double>(farPoint.w));
+                if (direction.y > -std::sin(dip)) continue;
+                ++below;
+                if (isBackground(pixel(file, x, y))) {
+                    if (++cracks <= 10) ADD_FAILURE() << v.name << ": background at pixel " << x << ", " << y;
+                }
+            }
+        std::printf("view %s: camera at %.0f, %.0f, %.0f; %d pixels below the horizon, %d of them background\n", v.name, camera.x, camera.y,
+                    camera.z, below, cracks);
+        EXPECT_GT(below, kWidth * kHeight / 10) << v.name << ": the view should look down on the terrain";
+        EXPECT_EQ(cracks, 0) << v.name;
+    }
+}
+
+TEST(TerrainCapture, NoNanOrInfAtAnySunAngle) {
+    for (const wchar_t* model : {L"Yusov 2013", L"Bruneton 2008"})
+        for (const int elevation : {-8, -1, 0, 2, 15, 90}) {
+            const ExrFile file = captureFrame("finite", {L"camera.position=2000,2500,-4000", L"camera.pitch=-12", L"camera.yaw=30",
+                                                         L"sun.elevation=" + std::to_wstring(elevation), L"sun.azimuth=60",
+                                                         std::wstring(L"atmosphere.model=") + model});
+            int bad = 0;
+            for (int y = 0; y < kHeight; ++y)
+                for (int x = 0; x < kWidth; ++x) {
+                    const glm::vec3 v = pixel(file, x, y);
+                    if (!std::isfinite(v.r) || !std::isfinite(v.g) || !std::isfinite(v.b)) ++bad;
+                }
+            EXPECT_EQ(bad, 0) << "model " << (model[0] == L'Y' ? "Yusov" : "Bruneton") << ", sun at " << elevation << " degrees";
+        }
+}
+
+// The share of pixels that differ by more than 1% between two frames.
+double changedShare(const ExrFile& a, const ExrFile& b) {
+    int changed = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::vec3 u = pixel(a, x, y), v = pixel(b, x, y);
+            if (glm::length(u - v) > 0.01f * std::max(glm::length(u), 1e-3f)) ++changed;
+        }
+    return static_cast<double>(changed) / (kWidth * kHeight);
+}
+
+TEST(TerrainCapture, ViewsShadowsAndCascadeTintChangeThePicture) {
+    const std::vector<std::wstring> scene{L"camera.position=0,3500,0", L"camera.pitch=-15", L"sun.azimuth=90", L"sun.elevation=12"};
+    const auto with = [&](std::vector<std::wstring> extra) {
+        extra.insert(extra.begin(), scene.begin(), scene.end());
+        return extra;
+    };
+    const ExrFile shaded = captureFrame("shaded", scene);
+    const ExrFile unshadowed = captureFrame("unshadowed", with({L"shadows.enabled=off"}));
+    const ExrFile tinted = captureFrame("tinted", with({L"shadows.showCascades=on"}));
+    const ExrFile albedo = captureFrame("albedo", with({L"terrain.view=albedo"}));
+    const ExrFile levels = captureFrame("levels", with({L"terrain.view=clipmap levels"}));
+    const ExrFile noTerrain = captureFrame("none", with({L"terrain.enabled=off"}));
+    const double shadowed = changedShare(shaded, unshadowed);
+    std::printf("pixels changed: by shadows %.3f, by the cascade tint %.3f, albedo view %.3f, levels view %.3f, without terrain %.3f\n",
+                shadowed, changedShare(shaded, tinted), changedShare(shaded, albedo), changedShare(shaded, levels),
+                changedShare(shaded, noTerrain));
+    EXPECT_GT(shadowed, 0.03);  // mountains cast shadows at a 12-degree sun
+    EXPECT_LT(shadowed, 0.6);
+    EXPECT_GT(changedShare(shaded, tinted), 0.3);
+    EXPECT_GT(changedShare(shaded, albedo), 0.3);
+    EXPECT_GT(changedShare(albedo, levels), 0.3);
+    EXPECT_GT(changedShare(shaded, noTerrain), 0.3);
+}
+
+}  // namespace
+}  // namespace firmament::test
