@@ -40,7 +40,7 @@ Imath::half halfAt(const ExrFile& file, int x, int y, int channel) {
     return h;
 }
 
-// With the orientation grid and light scattering off nothing draws: the HDR frame holds the background
+// With the orientation grid, light scattering and the terrain off nothing draws: the HDR frame holds the background
 // radiance everywhere, and the PNG, without the GUI (left out by default), is uniform. Its
 // colour is the background tone mapped with the default settings (Uncharted 2, auto
 // exposure: the background's own luminance is the average), as the CPU reference predicts.
@@ -52,7 +52,7 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const ProcessResult run =
         runProcess(firmamentExe(), {L"--headless", L"--frames", L"4", L"--resolution", L"320x200", L"--capture", png.wstring(),
                                     L"--set", L"scene.orientationGrid=off", L"--set", L"atmosphere.enabled=off",
-                                    L"--set", L"camera.fieldOfView=60"});
+                                    L"--set", L"terrain.enabled=off", L"--set", L"camera.fieldOfView=60"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("GPU time per pass over 4 frames at 320x200"), std::string::npos) << run.output;
     for (const char* pass : {"Scene luminance", "Light adaptation", "Tone mapping"})
@@ -102,13 +102,13 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     std::filesystem::remove_all(folder);
 }
 
-// The orientation grid on its own (light scattering off): its sky above the horizon and the
+// The orientation grid on its own (light scattering and the terrain off): its sky above the horizon and the
 // ground below. A saved state file sets the view: looking down 10 degrees from 500 m.
 TEST(HeadlessRun, DrawsTheOrientationGridFromASettingsFile) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-grid-test";
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
-    std::ofstream(folder / "view.json") << R"({"camera": {"position": [0, 500, 0], "pitch": -10}, "sun": {"elevation": 45}, "atmosphere": {"enabled": false}})";
+    std::ofstream(folder / "view.json") << R"({"camera": {"position": [0, 500, 0], "pitch": -10}, "sun": {"elevation": 45}, "atmosphere": {"enabled": false}, "terrain": {"enabled": false}})";
     const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--frames", L"2", L"--resolution", L"256x256",
                                                           L"--settings", (folder / "view.json").wstring(), L"--capture",
                                                           (folder / "grid.png").wstring()});

@@ -38,7 +38,7 @@ TEST_P(SkyCapture, SkyRadianceMatchesTheReference) {
     const std::wstring elevation = std::to_wstring(c.sunElevation);
     const ProcessResult run = runProcess(
         firmamentExe(), {L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
-                         L"--set", L"scene.orientationGrid=off", L"--set", L"camera.position=0," + std::to_wstring(kAltitude) + L",0",
+                         L"--set", L"scene.orientationGrid=off", L"--set", L"terrain.enabled=off", L"--set", L"camera.position=0," + std::to_wstring(kAltitude) + L",0",
                          L"--set", L"camera.pitch=35", L"--set", L"camera.fieldOfView=70", L"--set", L"sun.elevation=" + elevation,
                          L"--set", L"sun.azimuth=20", L"--set", L"atmosphere.sunIntensity=2", L"--set", L"atmosphere.multipleScattering=none",
                          L"--set", L"atmosphere.scatteringOrders=1", L"--set", std::wstring(L"atmosphere.model=") + c.model, L"--capture",

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 namespace firmament::test {
@@ -35,7 +36,13 @@ TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("saved to the cache"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("exported to"), std::string::npos) << run.output;
-    ASSERT_EQ(filesIn(cache).size(), 5u);  // net density, single, high-order and multiple scattering, ambient light
+    // Net density, single, high-order and multiple scattering, ambient light; and the terrain's
+    // height field, generated at the first run into the same cache.
+    const auto cached = filesIn(cache);
+    ASSERT_EQ(cached.size(), 6u);
+    EXPECT_EQ(std::count_if(cached.begin(), cached.end(),
+                            [](const std::filesystem::path& f) { return f.filename().string().rfind("terrain-", 0) == 0; }),
+              1);
     for (const char* name : {"net-density.exr", "single-scattering.exr", "high-order-scattering.exr", "multiple-scattering.exr",
                              "ambient-light.exr"})
         EXPECT_TRUE(std::filesystem::exists(exported / name)) << name;
@@ -76,7 +83,36 @@ TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
     run = runWithCache(cache, {L"--set", L"atmosphere.lutResolution=medium (16x64x32x8)"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("pre-computing"), std::string::npos) << run.output;
-    EXPECT_EQ(filesIn(cache).size(), 10u);
+    EXPECT_EQ(filesIn(cache).size(), 11u);
+    std::filesystem::remove_all(folder);
+}
+
+// The terrain's height field: generated at the first run into the cache, loaded by the next,
+// generated again (with a warning naming the file) when the cached file is damaged.
+TEST(TableCache, TerrainHeightFieldIsGeneratedOnceAndRegeneratedWhenDamaged) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-terrain-cache";
+    std::filesystem::remove_all(folder);
+    const auto cache = folder / "cache";
+    ProcessResult run = runWithCache(cache);
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find("terrain: height field generated in"), std::string::npos) << run.output;
+    std::filesystem::path field;
+    for (const auto& file : filesIn(cache))
+        if (file.filename().string().rfind("terrain-", 0) == 0) field = file;
+    ASSERT_FALSE(field.empty());
+    EXPECT_EQ(readFloatChannelExr(field).image.width, 2048);
+
+    run = runWithCache(cache);
+    EXPECT_NE(run.output.find("terrain: height field loaded from"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("terrain: generating"), std::string::npos) << run.output;
+
+    const std::string garbage = "not an EXR file";
+    writeFileBytes(field, std::span(reinterpret_cast<const std::uint8_t*>(garbage.data()), garbage.size()));
+    run = runWithCache(cache);
+    ASSERT_EQ(run.exitCode, 0u) << run.output;
+    EXPECT_NE(run.output.find(field.filename().string()), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("generating the height field again"), std::string::npos) << run.output;
+    EXPECT_EQ(readFloatChannelExr(field).image.width, 2048);  // cached again
     std::filesystem::remove_all(folder);
 }
 
@@ -88,7 +124,7 @@ TEST(TableCache, BothModelsCacheAndExportTheirTables) {
     const auto cache = folder / "cache", exported = folder / "exported";
     ProcessResult run = runWithCache(cache, {L"--set", L"atmosphere.comparison=split", L"--export-luts", exported.wstring()});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
-    EXPECT_EQ(filesIn(cache).size(), 8u);  // Yusov's five, Bruneton's three
+    EXPECT_EQ(filesIn(cache).size(), 9u);  // Yusov's five, Bruneton's three, the terrain's height field
     for (const char* name : {"bruneton-transmittance.exr", "bruneton-irradiance.exr", "bruneton-inscatter.exr", "multiple-scattering.exr"})
         EXPECT_TRUE(std::filesystem::exists(exported / name)) << name;
     const ExrFile inscatter = readExr(exported / "bruneton-inscatter.exr");
