@@ -17,7 +17,7 @@ static const float3 kSnowAlbedo = float3(0.780, 0.800, 0.840);
 float3 terrainAlbedo(float altitude, float steepness, float2 p) {
     float large = valueNoise(p / 310.0, 8) * 0.5 + 0.5;  // patches of hundreds of metres
     float small = valueNoise(p / 23.0, 9) * 0.5 + 0.5;   // and of tens
-    float3 meadow = lerp(kMeadowAlbedo, kDryGrassAlbedo, saturate(large * 1.4 - 0.3));
+    float3 meadow = lerp(kMeadowAlbedo, kDryGrassAlbedo, 0.25 + 0.35 * large + 0.2 * small);
     float3 rock = lerp(kDarkRockAlbedo, kRockAlbedo, saturate(small * 0.8 + large * 0.4));
     float treeLine = 1500.0 + 300.0 * large;
     float rockWeight = max(smoothstep(0.16, 0.28, steepness + 0.06 * small), 0.8 * smoothstep(treeLine, treeLine + 400.0, altitude));

@@ -31,9 +31,9 @@ float valueNoise(float2 p, uint octave) {
     return lerp(top, bottom, w.y);
 }
 
-static const uint kDetailOctaves = 4;
-static const float kDetailLongestWavelength = 32.0;
-static const float kDetailAmplitude = 0.05;  // of the wavelength
+static const uint kDetailOctaves = 5;
+static const float kDetailLongestWavelength = 64.0;
+static const float kDetailAmplitude = 0.06;  // of the wavelength
 
 // Detail octaves a grid of vertex spacing `spacing` resolves (weight saturate(lambda / 2s - 1)).
 float detailHeight(float2 p, float spacing) {

@@ -7,12 +7,12 @@
 
 namespace firmament {
 
-// Detail noise: octaves of value noise of wavelengths 32, 16, 8 and 4 m, amplitude 5% of the
+// Detail noise: octaves of value noise of wavelengths 64, 32, 16, 8 and 4 m, amplitude 6% of the
 // wavelength, each weighted by saturate(wavelength / (2 spacing) - 1) so that a grid of vertex
 // spacing `spacing` carries only the octaves it resolves (4 or more vertices to a wavelength).
-inline constexpr int kDetailOctaves = 4;
-inline constexpr double kDetailLongestWavelength = 32.0;
-inline constexpr double kDetailAmplitude = 0.05;  // of the wavelength
+inline constexpr int kDetailOctaves = 5;
+inline constexpr double kDetailLongestWavelength = 64.0;
+inline constexpr double kDetailAmplitude = 0.06;  // of the wavelength
 double detailHeight(double x, double z, double spacing);
 
 // The height-field mip a grid of this vertex spacing samples: one texel per vertex or finer.

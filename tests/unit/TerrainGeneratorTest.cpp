@@ -122,9 +122,9 @@ TEST(TerrainSurface, DetailNoiseFadesOnCoarseGridsAndStaysSmall) {
         largest = std::max(largest, std::abs(detailHeight(x, z, 1.0)));
         EXPECT_EQ(detailHeight(x, z, kDetailLongestWavelength / 2.0), 0.0);  // no octave resolved
     }
-    // The octaves' amplitudes sum to 5% of (32 + 16 + 8 + 4) m.
-    EXPECT_GT(largest, 0.5);
-    EXPECT_LE(largest, kDetailAmplitude * 60.0);
+    // The octaves' amplitudes sum to 6% of (64 + 32 + 16 + 8 + 4) m = 7.44 m.
+    EXPECT_GT(largest, 1.0);
+    EXPECT_LE(largest, kDetailAmplitude * 124.0);
 }
 
 TEST(TerrainSurface, MipChoiceAndEarthDrop) {
