@@ -3,7 +3,8 @@
 // Lambert term, under a two-colour sky gradient with a sun disc. Not a physical model: the
 // atmosphere and terrain passes replace it (Basic panel, "Orientation grid").
 // GROUND_ONLY=1 (light scattering on): only the ground, now the Earth's sphere (so that it
-// meets the spherical atmosphere, and curves away seen from orbit), lit by the sun's
+// meets the spherical atmosphere, and curves away seen from orbit), beyond the terrain's reach
+// when the terrain draws, lit by the sun's
 // irradiance with a Lambert term and a flat ambient, and its depth, so that the atmosphere's
 // pass draws the sky and adds aerial perspective. The terrain issue brings physical lighting.
 #include "common/fullscreen_triangle.hlsli"
@@ -74,6 +75,10 @@ float4 ps_main(FullscreenVertex input, out float depth : SV_Depth) : SV_Target {
     float distance = c / (-b + sqrt(discriminant));
     if (distance <= 0.0) discard;
     float3 ground = frame.cameraPosition.xyz + direction * distance;
+    // Under the terrain the grid would fight it in depth (the terrain's plains lie within
+    // metres of the sphere): the grid's ground starts where the terrain ends.
+    float2 fromCamera = ground.xz - frame.cameraPosition.xz;
+    if (dot(fromCamera, fromCamera) < frame.planet.y * frame.planet.y) discard;
     float4 clip = mul(frame.viewProjection, float4(ground, 1.0));
     depth = saturate(clip.z / clip.w);
     if (depth >= 1.0) discard;  // beyond the far plane: the sky pass sees the ground there

@@ -328,7 +328,8 @@ gpu::FrameConstants App::frameConstants() const {
                          1.0f / static_cast<float>(height_));
     c.time = glm::vec4(static_cast<float>(timer_.totalSeconds()), 0.0f, 0.0f, 0.0f);
     c.sunIrradiance = glm::vec4(glm::vec3(state_.atmosphere.sunIntensity), 0.0f);
-    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), 0.0f, 0.0f, 0.0f);
+    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius),
+                         state_.terrain.enabled ? static_cast<float>(clipmapReach()) : 0.0f, 0.0f, 0.0f);
     return c;
 }
 

@@ -8,6 +8,8 @@ namespace firmament {
 
 int holeFirstCell(int offset) { return kClipmapCells / 4 + offset; }
 
+double clipmapReach() { return (kClipmapCells / 2 - 1) * kFinestSpacing * std::ldexp(1.0, kClipmapLevels - 1); }
+
 std::vector<ClipmapLevel> clipmapLevels(glm::dvec2 camera, double heightAboveGround) {
     constexpr int half = kClipmapCells / 2;
     int finest = 0;

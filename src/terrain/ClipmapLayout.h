@@ -29,6 +29,10 @@ struct ClipmapLevel {
 // The levels to draw, finest first. heightAboveGround: metres, >= 0.
 std::vector<ClipmapLevel> clipmapLevels(glm::dvec2 camera, double heightAboveGround);
 
+// How far from the camera the terrain surely reaches in x and z: the coarsest level's half-width
+// less the one cell its snapping may shift it by (508 km).
+double clipmapReach();
+
 // The cells [first, first + kClipmapCells / 2) of each axis are the hole for this offset.
 int holeFirstCell(int offset);
 

@@ -64,7 +64,8 @@ struct View {
 // Over the clear colour, without the atmosphere or the grid: every pixel whose ray points below
 // the horizon (the geometric dip for the camera's altitude, and half a degree more) must be
 // terrain. The terrain stands on or above the sea-level sphere and its coarsest level reaches
-// 524 km, beyond the horizon from up to 21 km, so a background pixel there is a crack.
+// 524 km, beyond the horizon from up to 21 km (and a view from 40 km looks steeply down), so a
+// background pixel there is a crack.
 TEST(TerrainCapture, LevelsMeetWithoutCracks) {
     const std::vector<View> views = {
         {"ground", {L"camera.position=0,0,0", L"camera.pitch=-30"}},  // pushed up to 100 m above the ground
@@ -72,6 +73,7 @@ TEST(TerrainCapture, LevelsMeetWithoutCracks) {
         {"default", {L"camera.position=0,8000,0", L"camera.pitch=-20"}},
         {"far", {L"camera.position=-12345,300,777", L"camera.yaw=-160", L"camera.pitch=-4"}},
         {"high", {L"camera.position=30000,20000,-50000", L"camera.yaw=120", L"camera.pitch=-45"}},
+        {"demo's end", {L"camera.position=6000,40000,9000", L"camera.yaw=120", L"camera.pitch=-60"}},
     };
     for (const View& v : views) {
         std::vector<std::wstring> settings{L"atmosphere.enabled=off", L"scene.orientationGrid=off", L"shadows.enabled=off"};
@@ -100,6 +102,23 @@ TEST(TerrainCapture, LevelsMeetWithoutCracks) {
         EXPECT_GT(below, kWidth * kHeight / 10) << v.name << ": the view should look down on the terrain";
         EXPECT_EQ(cracks, 0) << v.name;
     }
+}
+
+// Under light scattering the orientation grid draws the Earth's sphere with depth. The terrain's
+// plains lie within metres of it, closer than the depth buffer resolves from afar, so the grid
+// must start where the terrain ends: with the terrain filling the view, the frame is the same
+// with the grid on or off.
+TEST(TerrainCapture, TheGridStaysBeyondTheTerrain) {
+    const std::vector<std::wstring> view{L"camera.position=6000,40000,9000", L"camera.yaw=120", L"camera.pitch=-60", L"shadows.enabled=off"};
+    std::vector<std::wstring> withGrid = view, withoutGrid = view;
+    withGrid.push_back(L"scene.orientationGrid=on");
+    withoutGrid.push_back(L"scene.orientationGrid=off");
+    const ExrFile a = captureFrame("grid-on", withGrid), b = captureFrame("grid-off", withoutGrid);
+    int differing = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (pixel(a, x, y) != pixel(b, x, y)) ++differing;
+    EXPECT_EQ(differing, 0) << "pixels where the grid shows through the terrain";
 }
 
 TEST(TerrainCapture, NoNanOrInfAtAnySunAngle) {
