@@ -42,7 +42,8 @@ struct TerrainConstants {
     float4 coarser;  // x: the next coarser level's spacing; y: its mip; z: cells over which vertices morph
                      // into the coarser level at the outer edge (0: no coarser level); w: unused
     uint4 grid;      // x: cells per side of a level; y: the level's index; z: material view (0 shaded,
-                     // 1 albedo, 2 normals, 3 levels); w: atmosphere off (1: constant sky light)
+                     // 1 albedo, 2 normals, 3 levels); w: the hole's first cell, x in the low 16
+                     // bits and z in the high 16 (its edge's midpoints: src/terrain/ClipmapMesh.h)
 };
 FIRMAMENT_CONSTANT_BUFFER(TerrainConstants);
 

@@ -1,8 +1,9 @@
 // The terrain (docs/terrain.md): one clipmap level per draw, a regular grid of cells around the
-// camera whose vertex spacing doubles from level to level. The vertex shader places grid vertex
+// camera whose vertex spacing doubles from level to level. The vertex shader places vertex
 // SV_VertexID on the surface; near the level's outer edge it morphs into the surface of the next
-// coarser level, so that on the edge every vertex lies on the coarser level's edge and the two
-// meet without cracks. The pixel shader shades with the height field's slopes and the detail
+// coarser level, so that on the edge every vertex lies on the coarser level's edge, and the
+// coarser level takes the finer one's edge vertices into its own triangles: the two meet
+// without cracks or T-junctions. The pixel shader shades with the height field's slopes and the detail
 // noise's, a material by slope and altitude, the sun attenuated by the atmosphere and shadowed by
 // the cascades, and the ambient sky light (document 000, "Terrain shaders").
 //   vs_main + ps_main: the HDR frame, with depth; GROUND_LIGHTING selects the tables (0, 1, 2).
@@ -32,13 +33,31 @@ SamplerComparisonState shadowComparison : register(s2);
 #include "terrain/material.hlsli"
 #include "shadows/cascade_sampling.hlsli"
 
-// The world position of grid vertex `id` of the current level.
+// The world position of vertex `id` of the current level: a grid vertex, or a midpoint of the
+// hole's edge (src/terrain/ClipmapMesh.h).
 float3 clipmapVertex(uint id) {
     uint cells = terrain.grid.x;
-    uint i = id % (cells + 1), j = id / (cells + 1);
     float spacing = terrain.level.z;
+    uint mip = (uint)terrain.level.w;
+    uint gridVertices = (cells + 1) * (cells + 1);
+    if (id >= gridVertices) {
+        // Halfway between two vertices on the hole's edge, where the finer level has a vertex of
+        // its boundary: the mean of the two, computed as the finer level computes it.
+        uint halfCells = cells / 2, k = id - gridVertices, side = k / halfCells;
+        float t = (float)(k % halfCells) + 0.5;
+        float2 hole = float2(terrain.grid.w & 0xffffu, terrain.grid.w >> 16);
+        float2 cell = side == 0 ? float2(hole.x + t, hole.y)
+                    : side == 1 ? float2(hole.x + halfCells, hole.y + t)
+                    : side == 2 ? float2(hole.x + t, hole.y + halfCells)
+                                : float2(hole.x, hole.y + t);
+        float2 along = (side % 2 == 0 ? float2(0.5, 0.0) : float2(0.0, 0.5)) * spacing;
+        float2 q = terrain.level.xy + cell * spacing;
+        float qy = 0.5 * (surfaceY(terrain, heightField, q - along, spacing, mip) + surfaceY(terrain, heightField, q + along, spacing, mip));
+        return float3(q.x, qy, q.y);
+    }
+    uint i = id % (cells + 1), j = id / (cells + 1);
     float2 p = terrain.level.xy + float2(i, j) * spacing;
-    float y = surfaceY(terrain, heightField, p, spacing, (uint)terrain.level.w);
+    float y = surfaceY(terrain, heightField, p, spacing, mip);
     float morphCells = terrain.coarser.z;
     if (morphCells > 0.0) {
         // Cells to the level's outer edge; the morph weight reaches 1 there.
@@ -60,7 +79,8 @@ float3 clipmapVertex(uint id) {
                 coarseY = 0.5 * (surfaceY(terrain, heightField, p - odd, coarseSpacing, coarseMip) +
                                  surfaceY(terrain, heightField, p + odd, coarseSpacing, coarseMip));
             }
-            y = lerp(y, coarseY, weight);
+            // On the edge exactly the coarser level's value (lerp could round it off by an ulp).
+            y = weight >= 1.0 ? coarseY : lerp(y, coarseY, weight);
         }
     }
     return float3(p.x, y, p.y);

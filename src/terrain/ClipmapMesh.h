@@ -1,9 +1,15 @@
 #pragma once
-// The index buffer of a clipmap level's grid (ClipmapLayout.h): (kClipmapCells + 1)^2 vertices,
-// numbered row by row (vertex i + j * (cells + 1) at column i, row j), which the vertex shader
-// places from SV_VertexID alone, so there is no vertex buffer. Ten index ranges: the whole grid
-// (the finest level) and the grid less its hole for each of the nine hole offsets. Triangles are
-// clockwise seen from above (+y), Direct3D's front faces.
+// The index buffer of a clipmap level's grid (ClipmapLayout.h), whose vertices the vertex shader
+// places from SV_VertexID alone (no vertex buffer):
+//  - (kClipmapCells + 1)^2 grid vertices, row by row: vertex i + j * (cells + 1) at column i, row j;
+//  - then 2 * kClipmapCells midpoints of the hole's edge cells, side by side (lowest z, highest x,
+//    highest z, lowest x), each where the finer level has a vertex of its boundary. The cells
+//    along the hole take them into a fan of three triangles, so the two levels share every
+//    vertex of their common edge: no T-junction, a watertight mesh.
+// Ten index ranges: the whole grid (the finest level) and the grid less its hole for each of the
+// nine hole offsets. Triangles are clockwise seen from above (+y), Direct3D's front faces.
+#include "terrain/ClipmapLayout.h"
+
 #include <glm/vec2.hpp>
 
 #include <d3d11.h>
@@ -14,6 +20,12 @@
 #include <vector>
 
 namespace firmament {
+
+inline constexpr std::uint32_t kClipmapGridVertices = (kClipmapCells + 1) * (kClipmapCells + 1);
+
+// Where vertex `id` stands, in cells from the level's origin, for a hole starting at holeFirst
+// (the vertex shader's placement).
+glm::dvec2 clipmapVertexCell(std::uint32_t id, glm::ivec2 holeFirst);
 
 struct IndexRange {
     UINT first = 0;

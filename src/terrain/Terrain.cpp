@@ -102,7 +102,10 @@ void Terrain::drawLevels(ID3D11DeviceContext* context, unsigned view) {
         c.coarser = coarser ? glm::vec4(static_cast<float>(2.0 * level.spacing), static_cast<float>(heightMipFor(2.0 * level.spacing, field_)),
                                         static_cast<float>(kClipmapCells / 8), 0.0f)
                             : glm::vec4(0.0f);
-        c.grid = glm::uvec4(kClipmapCells, static_cast<unsigned>(level.index), view, 0u);
+        const glm::uvec2 hole = level.hasHole ? glm::uvec2(static_cast<unsigned>(holeFirstCell(level.holeOffset.x)),
+                                                           static_cast<unsigned>(holeFirstCell(level.holeOffset.y)))
+                                              : glm::uvec2(0xffffu);
+        c.grid = glm::uvec4(kClipmapCells, static_cast<unsigned>(level.index), view, hole.x | (hole.y << 16));
         constants_.update(context, c);
         const IndexRange range = level.hasHole ? mesh_.holed(level.holeOffset) : mesh_.whole();
         context->DrawIndexed(range.count, range.first, 0);

@@ -5,11 +5,15 @@
 #include "terrain/ClipmapLayout.h"
 #include "terrain/ClipmapMesh.h"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace firmament {
 namespace {
@@ -53,35 +57,62 @@ TEST(ClipmapLayout, HighCamerasSkipTheFinestLevels) {
     EXPECT_GT((kClipmapCells / 2) * std::ldexp(kFinestSpacing, kClipmapLevels - 1), std::sqrt(2.0 * 6.36e6 * 20e3));
 }
 
-// Each cell of the grid, once per triangle pair, except the hole's.
-TEST(ClipmapMesh, RangesCoverTheGridLessTheHoleOnce) {
+// Each range covers its grid less the hole exactly once, with clockwise triangles, and is
+// watertight: every edge inside the mesh is shared by exactly two triangles, and those used once
+// lie on the grid's outer edge or the hole's. The cells along the hole take the midpoints of
+// their hole-side edges, the finer level's boundary vertices: no T-junction is left.
+TEST(ClipmapMesh, RangesCoverTheGridLessTheHoleOnceAndAreWatertight) {
     const ClipmapIndices mesh = buildClipmapIndices();
-    constexpr int n = kClipmapCells;
+    constexpr int n = kClipmapCells, half = kClipmapCells / 2;
     for (int variant = 0; variant < 10; ++variant) {
-        const IndexRange range = mesh.ranges[static_cast<size_t>(variant)];
-        std::multiset<int> cells;
-        for (UINT t = 0; t < range.count; t += 3) {
-            int column = n, row = n;  // the cell's lowest column and row
-            for (int v = 0; v < 3; ++v) {
-                const unsigned index = mesh.indices[range.first + t + static_cast<UINT>(v)];
-                column = std::min(column, static_cast<int>(index % (n + 1)));
-                row = std::min(row, static_cast<int>(index / (n + 1)));
-            }
-            cells.insert(column + n * row);
-            // Clockwise seen from +y (x right, z up): a negative signed area in (x, z).
-            const unsigned a = mesh.indices[range.first + t], b = mesh.indices[range.first + t + 1], c = mesh.indices[range.first + t + 2];
-            const int ax = static_cast<int>(a % (n + 1)), az = static_cast<int>(a / (n + 1));
-            const int bx = static_cast<int>(b % (n + 1)), bz = static_cast<int>(b / (n + 1));
-            const int cx = static_cast<int>(c % (n + 1)), cz = static_cast<int>(c / (n + 1));
-            EXPECT_LT((bx - ax) * (cz - az) - (bz - az) * (cx - ax), 0);
-        }
         const bool holed = variant < 9;
-        const int hx = holed ? holeFirstCell(variant / 3 - 1) : -1, hz = holed ? holeFirstCell(variant % 3 - 1) : -1;
+        const glm::ivec2 hole = holed ? glm::ivec2(holeFirstCell(variant / 3 - 1), holeFirstCell(variant % 3 - 1)) : glm::ivec2(-100);
+        const IndexRange range = mesh.ranges[static_cast<size_t>(variant)];
+        std::vector<double> cellArea(static_cast<size_t>(n * n), 0.0);
+        std::map<std::pair<unsigned, unsigned>, int> edges;
+        int midpointsUsed = 0;
+        for (UINT t = 0; t < range.count; t += 3) {
+            unsigned ids[3];
+            glm::dvec2 v[3];
+            for (int k = 0; k < 3; ++k) {
+                ids[k] = mesh.indices[range.first + t + static_cast<UINT>(k)];
+                v[k] = clipmapVertexCell(ids[k], hole);
+                if (ids[k] >= kClipmapGridVertices) ++midpointsUsed;
+            }
+            // Clockwise seen from +y (x right, z up): a negative signed area in (x, z).
+            const double area = 0.5 * ((v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x));
+            ASSERT_LT(area, 0.0) << "variant " << variant << " triangle " << t / 3;
+            const glm::dvec2 centroid = (v[0] + v[1] + v[2]) / 3.0;
+            cellArea[static_cast<size_t>(static_cast<int>(centroid.x) + n * static_cast<int>(centroid.y))] -= area;
+            for (int k = 0; k < 3; ++k) ++edges[std::minmax(ids[k], ids[(k + 1) % 3])];
+        }
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
-                const bool inHole = holed && i >= hx && i < hx + n / 2 && j >= hz && j < hz + n / 2;
-                EXPECT_EQ(cells.count(i + n * j), inHole ? 0u : 2u) << "variant " << variant << " cell " << i << "," << j;
+                const bool inHole = holed && i >= hole.x && i < hole.x + half && j >= hole.y && j < hole.y + half;
+                EXPECT_NEAR(cellArea[static_cast<size_t>(i + n * j)], inHole ? 0.0 : 1.0, 1e-12) << "variant " << variant << " cell " << i << "," << j;
             }
+        const auto onBoundary = [&](glm::dvec2 a, glm::dvec2 b) {
+            const auto onLine = [&](double c, double line) { return c == line; };
+            const bool outer = (onLine(a.x, 0) && onLine(b.x, 0)) || (onLine(a.x, n) && onLine(b.x, n)) || (onLine(a.y, 0) && onLine(b.y, 0)) ||
+                               (onLine(a.y, n) && onLine(b.y, n));
+            const bool inner = holed && ((onLine(a.x, hole.x) && onLine(b.x, hole.x)) || (onLine(a.x, hole.x + half) && onLine(b.x, hole.x + half)) ||
+                                         (onLine(a.y, hole.y) && onLine(b.y, hole.y)) || (onLine(a.y, hole.y + half) && onLine(b.y, hole.y + half)));
+            return outer || inner;
+        };
+        for (const auto& [edge, uses] : edges) {
+            const glm::dvec2 a = clipmapVertexCell(edge.first, hole), b = clipmapVertexCell(edge.second, hole);
+            EXPECT_LE(uses, 2) << "variant " << variant;
+            if (uses == 1) {
+                EXPECT_TRUE(onBoundary(a, b)) << "variant " << variant << ": an open edge inside the mesh (" << a.x << "," << a.y << ")-(" << b.x
+                                              << "," << b.y << ")";
+                if (holed && onBoundary(a, b) && glm::length(b - a) > 0.75 && a.x > 0 && a.x < n && a.y > 0 && a.y < n && b.x > 0 && b.x < n &&
+                    b.y > 0 && b.y < n) {
+                    ADD_FAILURE() << "variant " << variant << ": a whole cell edge on the hole, a T-junction against the finer level";
+                }
+            }
+        }
+        // Every midpoint, three triangles each.
+        EXPECT_EQ(midpointsUsed, holed ? 3 * 4 * half : 0) << "variant " << variant;
     }
 }
 
