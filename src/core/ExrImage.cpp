@@ -16,6 +16,8 @@
 
 #include <exception>
 
+#include <span>
+
 namespace firmament {
 
 namespace {
@@ -90,91 +92,83 @@ void writeExr(const std::filesystem::path& path, const HalfRgbaImage& image, con
     }
 }
 
-void writeExr(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes) {
-    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+namespace {
+
+// 32-bit float pixels of `channels.size()` interleaved channels, written under those names.
+void writeFloatChannels(const std::filesystem::path& path, int width, int height, const std::vector<float>& values,
+                        std::span<const char* const> channels, const ExrAttributes& attributes) {
+    const size_t count = channels.size();
+    if (width <= 0 || height <= 0 || values.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * count)
         throw Error("writeExr: image size does not match its pixel data");
     try {
-        Imf::Header header(image.width, image.height);
+        Imf::Header header(width, height);
         header.compression() = Imf::ZIP_COMPRESSION;
         for (const auto& [name, value] : attributes) insertAttribute(header, name, value);
         Imf::FrameBuffer frame;
-        const char* channels[4] = {"R", "G", "B", "A"};
-        for (int c = 0; c < 4; ++c) {
+        for (size_t c = 0; c < count; ++c) {
             header.channels().insert(channels[c], Imf::Channel(Imf::FLOAT));
-            frame.insert(channels[c], Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(image.rgba.data() + c)),
-                                                 sizeof(float) * 4, sizeof(float) * 4 * static_cast<size_t>(image.width)));
+            frame.insert(channels[c], Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(values.data() + c)),
+                                                 sizeof(float) * count, sizeof(float) * count * static_cast<size_t>(width)));
         }
         Imf::OutputFile file(path.string().c_str(), header);
         file.setFrameBuffer(frame);
-        file.writePixels(image.height);
+        file.writePixels(height);
     } catch (const std::exception& e) {
         throw Error("cannot write the EXR file '" + path.string() + "': " + e.what());
     }
+}
+
+// The named channels as interleaved 32-bit floats (any pixel type, converted; a channel the file
+// lacks reads as zero unless `required`).
+void readFloatChannels(const std::filesystem::path& path, std::span<const char* const> channels, bool required, int& width, int& height,
+                       std::vector<float>& values, ExrAttributes& attributes) {
+    try {
+        Imf::InputFile file(path.string().c_str());
+        for (const char* name : channels)
+            if (required && !file.header().channels().findChannel(name)) throw Error(std::string("it has no channel ") + name);
+        const Imath::Box2i window = file.header().dataWindow();
+        const size_t count = channels.size();
+        width = window.max.x - window.min.x + 1;
+        height = window.max.y - window.min.y + 1;
+        values.assign(static_cast<size_t>(width) * static_cast<size_t>(height) * count, 0.0f);
+        char* base = reinterpret_cast<char*>(values.data()) -
+                     (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * width) *
+                         static_cast<std::ptrdiff_t>(sizeof(float) * count);
+        Imf::FrameBuffer frame;
+        for (size_t c = 0; c < count; ++c)
+            frame.insert(channels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(float) * count,
+                                                 sizeof(float) * count * static_cast<size_t>(width)));
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        attributes = readAttributes(file.header());
+    } catch (const std::exception& e) {
+        throw Error("cannot read the EXR file '" + path.string() + "': " + e.what());
+    }
+}
+
+constexpr const char* kRgba[4] = {"R", "G", "B", "A"};
+constexpr const char* kLuminance[1] = {"Y"};
+
+}  // namespace
+
+void writeExr(const std::filesystem::path& path, const FloatRgbaImage& image, const ExrAttributes& attributes) {
+    writeFloatChannels(path, image.width, image.height, image.rgba, kRgba, attributes);
 }
 
 FloatExrFile readFloatExr(const std::filesystem::path& path) {
-    try {
-        Imf::InputFile file(path.string().c_str());
-        const Imath::Box2i window = file.header().dataWindow();
-        FloatExrFile out;
-        out.image.width = window.max.x - window.min.x + 1;
-        out.image.height = window.max.y - window.min.y + 1;
-        out.image.rgba.assign(static_cast<size_t>(out.image.width) * out.image.height * 4, 0.0f);
-        Imf::FrameBuffer frame;
-        const char* channels[4] = {"R", "G", "B", "A"};
-        char* base = reinterpret_cast<char*>(out.image.rgba.data()) -
-                     (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * out.image.width) * 16;
-        for (int c = 0; c < 4; ++c)
-            frame.insert(channels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(float) * 4,
-                                                 sizeof(float) * 4 * static_cast<size_t>(out.image.width)));
-        file.setFrameBuffer(frame);
-        file.readPixels(window.min.y, window.max.y);
-        out.attributes = readAttributes(file.header());
-        return out;
-    } catch (const std::exception& e) {
-        throw Error("cannot read the EXR file '" + path.string() + "': " + e.what());
-    }
+    FloatExrFile out;
+    readFloatChannels(path, kRgba, false, out.image.width, out.image.height, out.image.rgba, out.attributes);
+    return out;
 }
 
 void writeExr(const std::filesystem::path& path, const FloatImage& image, const ExrAttributes& attributes) {
-    if (image.width <= 0 || image.height <= 0 || image.values.size() != static_cast<size_t>(image.width) * image.height)
-        throw Error("writeExr: image size does not match its pixel data");
-    try {
-        Imf::Header header(image.width, image.height);
-        header.compression() = Imf::ZIP_COMPRESSION;
-        for (const auto& [name, value] : attributes) insertAttribute(header, name, value);
-        header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
-        Imf::FrameBuffer frame;
-        frame.insert("Y", Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(image.values.data())), sizeof(float),
-                                     sizeof(float) * static_cast<size_t>(image.width)));
-        Imf::OutputFile file(path.string().c_str(), header);
-        file.setFrameBuffer(frame);
-        file.writePixels(image.height);
-    } catch (const std::exception& e) {
-        throw Error("cannot write the EXR file '" + path.string() + "': " + e.what());
-    }
+    writeFloatChannels(path, image.width, image.height, image.values, kLuminance, attributes);
 }
 
 FloatImageFile readFloatChannelExr(const std::filesystem::path& path) {
-    try {
-        Imf::InputFile file(path.string().c_str());
-        if (!file.header().channels().findChannel("Y")) throw Error("it has no channel Y");
-        const Imath::Box2i window = file.header().dataWindow();
-        FloatImageFile out;
-        out.image.width = window.max.x - window.min.x + 1;
-        out.image.height = window.max.y - window.min.y + 1;
-        out.image.values.assign(static_cast<size_t>(out.image.width) * out.image.height, 0.0f);
-        char* base = reinterpret_cast<char*>(out.image.values.data()) -
-                     (static_cast<std::ptrdiff_t>(window.min.x) + static_cast<std::ptrdiff_t>(window.min.y) * out.image.width) * 4;
-        Imf::FrameBuffer frame;
-        frame.insert("Y", Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<size_t>(out.image.width)));
-        file.setFrameBuffer(frame);
-        file.readPixels(window.min.y, window.max.y);
-        out.attributes = readAttributes(file.header());
-        return out;
-    } catch (const std::exception& e) {
-        throw Error("cannot read the EXR file '" + path.string() + "': " + e.what());
-    }
+    FloatImageFile out;
+    readFloatChannels(path, kLuminance, true, out.image.width, out.image.height, out.image.values, out.attributes);
+    return out;
 }
 
 ExrFile readExr(const std::filesystem::path& path) {

@@ -1,5 +1,7 @@
 #include "terrain/TerrainGenerator.h"
 
+#include "terrain/IntegerHash.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -8,16 +10,6 @@
 namespace firmament {
 
 namespace {
-
-// Chris Wellons' "lowbias32" integer hash: every input bit changes about half the output bits.
-std::uint32_t hash32(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
 
 std::uint32_t latticeHash(int x, int z, std::uint32_t seed) {
     return hash32(static_cast<std::uint32_t>(x) ^ hash32(static_cast<std::uint32_t>(z) ^ hash32(seed)));

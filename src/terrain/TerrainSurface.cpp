@@ -1,5 +1,7 @@
 #include "terrain/TerrainSurface.h"
 
+#include "terrain/IntegerHash.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -7,16 +9,6 @@
 namespace firmament {
 
 namespace {
-
-// The same integer hash as shaders/terrain/surface.hlsli (Wellons' lowbias32).
-std::uint32_t hash32(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
 
 // A lattice value in [-1, 1].
 double latticeValue(int i, int j, int octave) {

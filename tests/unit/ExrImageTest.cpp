@@ -95,5 +95,32 @@ TEST(ExrImage, FloatPixelsRoundTripBitForBit) {
     EXPECT_EQ(widened.image.rgba[4 * 4 + 1], std::ldexp(1.0f, 1 - 8));  // pixel (0, 1), green
 }
 
+// One float channel "Y" (height fields): bit-exact round trip, and a file without "Y" (an RGBA
+// capture) refused with a message naming the path and the channel.
+TEST(ExrImage, SingleChannelFloatRoundTripsAndRefusesFilesWithoutIt) {
+    const auto path = tempPath("firmament-exr-y-test.exr");
+    FloatImage image{6, 4, {}};
+    for (int i = 0; i < 6 * 4; ++i) image.values.push_back(std::ldexp(1.0f + 0.01f * static_cast<float>(i), i % 30 - 10));
+    writeExr(path, image, {{"test.key", std::string("heights")}});
+    const FloatImageFile file = readFloatChannelExr(path);
+    std::filesystem::remove(path);
+    ASSERT_EQ(file.image.width, 6);
+    ASSERT_EQ(file.image.height, 4);
+    EXPECT_EQ(file.image.values, image.values);
+    EXPECT_EQ(std::get<std::string>(file.attributes.at("test.key")), "heights");
+    EXPECT_THROW(writeExr(path, FloatImage{6, 4, std::vector<float>(5)}, {}), Error);
+
+    const auto rgbaPath = tempPath("firmament-exr-rgba-not-y.exr");
+    writeExr(rgbaPath, rampImage(4, 3), {});
+    try {
+        readFloatChannelExr(rgbaPath);
+        ADD_FAILURE() << "an RGBA file read as a height field";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("firmament-exr-rgba-not-y.exr"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no channel Y"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(rgbaPath);
+}
+
 }  // namespace
 }  // namespace firmament
