@@ -8,6 +8,7 @@
 #include <Imath/half.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -135,6 +136,50 @@ TEST(TerrainCapture, NoNanOrInfAtAnySunAngle) {
                 }
             EXPECT_EQ(bad, 0) << "model " << (model[0] == L'Y' ? "Yusov" : "Bruneton") << ", sun at " << elevation << " degrees";
         }
+}
+
+// The terrain's pixels end to end, against document 000's shading computed on the CPU from the
+// same frame's albedo and normal views. Scattering and shadows off, so the sun arrives
+// unattenuated (T = 1) and the sky gives its constant 0.1 (ground_lighting.hlsli, model 0):
+//   L = albedo / pi * (max(N . L, 0) + 0.1 * saturate(4 cos(sun zenith) + 0.25) * (1 + N . up) / 2).
+// The view stays within 10 km of the origin, where the local vertical is (0, 1, 0) to 0.1 degree.
+TEST(TerrainCapture, ShadedPixelsFollowTheShadingFormula) {
+    const std::vector<std::wstring> view{L"camera.position=1500,2600,-2000", L"camera.pitch=-35", L"camera.yaw=20", L"sun.elevation=28",
+                                         L"sun.azimuth=-70", L"atmosphere.enabled=off", L"scene.orientationGrid=off", L"shadows.enabled=off"};
+    const auto with = [&](const wchar_t* extra) {
+        std::vector<std::wstring> v = view;
+        v.push_back(extra);
+        return v;
+    };
+    const ExrFile shaded = captureFrame("formula-shaded", with(L"terrain.view=shaded"));
+    const ExrFile albedo = captureFrame("formula-albedo", with(L"terrain.view=albedo"));
+    const ExrFile normals = captureFrame("formula-normals", with(L"terrain.view=normals"));
+    const glm::dvec3 toSun(std::get<glm::vec3>(shaded.attributes.at("firmament.directionToSun")));
+    const double pi = 3.14159265358979323846;
+    const double sky = 0.1 * std::clamp(4.0 * toSun.y + 0.25, 0.0, 1.0);
+    int compared = 0, wrong = 0;
+    double largest = 0.0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::vec3 a = pixel(albedo, x, y);
+            if (isBackground(a)) continue;
+            ++compared;
+            const glm::dvec3 n = glm::normalize(glm::dvec3(pixel(normals, x, y)) * 2.0 - 1.0);
+            const double light = std::max(glm::dot(n, toSun), 0.0) + sky * std::clamp((1.0 + n.y) * 0.5, 0.0, 1.0);
+            const glm::dvec3 expected = glm::dvec3(a) / pi * light;
+            const glm::dvec3 got(pixel(shaded, x, y));
+            for (int ch = 0; ch < 3; ++ch) {
+                // Relative to albedo / pi: half floats carry 11 bits, and the albedo, the normal
+                // and the result each round.
+                const double error = std::abs(got[ch] - expected[ch]) / (glm::dvec3(a)[ch] / pi);
+                largest = std::max(largest, error);
+                if (error > 0.01 && ++wrong <= 5)
+                    ADD_FAILURE() << "pixel " << x << ", " << y << " channel " << ch << ": " << got[ch] << " against " << expected[ch];
+            }
+        }
+    std::printf("terrain pixels against the shading formula: %d compared, largest error %.5f of albedo / pi\n", compared, largest);
+    EXPECT_GT(compared, kWidth * kHeight / 2);
+    EXPECT_EQ(wrong, 0);
 }
 
 // The share of pixels that differ by more than 1% between two frames.
