@@ -7,11 +7,13 @@
 //   GROUND_LIGHTING=0  no atmosphere: the sun unattenuated above the horizon, and a constant sky
 //                      irradiance of kConstantSkyIrradiance (the orientation grid's stand-in);
 //   GROUND_LIGHTING=1  Yusov 2013: the net density table and the ambient sky light table;
-//   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table.
-// Callers declare cbuffers `atmosphere` (AtmosphereConstants) and, for 2, `bruneton`, and the
-// tables `sunTransmittanceTable`, `skyIrradianceTable` and the sampler `linearClamp`.
+//   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table;
+//   GROUND_LIGHTING=3  the split view: Yusov's tables left of the split, Bruneton's right of it.
+// Callers declare cbuffers `atmosphere` (AtmosphereConstants) and, for 2 and 3, `bruneton`, the
+// tables `sunTransmittanceTable`, `skyIrradianceTable` (Yusov's for 3), for 3 also
+// `brunetonTransmittanceTable` and `brunetonIrradianceTable`, and the sampler `linearClamp`.
 #include "atmosphere/lut_lookup.hlsli"
-#if GROUND_LIGHTING == 2
+#if GROUND_LIGHTING == 2 || GROUND_LIGHTING == 3
 #include "atmosphere/bruneton/lookup.hlsli"
 #endif
 
@@ -24,21 +26,39 @@ struct GroundLight {
 
 // altitude: metres above the sea-level sphere; cosSunZenith: the sun's direction against the
 // local vertical (the direction from the Earth's centre).
-GroundLight groundLight(float altitude, float cosSunZenith) {
+GroundLight yusovGroundLight(float altitude, float cosSunZenith, Texture2D<float4> netDensity, Texture2D<float4> ambientLight) {
     GroundLight g;
-#if GROUND_LIGHTING == 1
-    g.sunTransmittance = sunTransmittance(atmosphere, sunTransmittanceTable, linearClamp, altitude, cosSunZenith);
+    g.sunTransmittance = sunTransmittance(atmosphere, netDensity, linearClamp, altitude, cosSunZenith);
     float width = atmosphere.netDensityLutSize.z;
-    g.skyIrradiance = skyIrradianceTable.SampleLevel(linearClamp, float2(unitToTexture(saturate(cosSunZenith * 0.5 + 0.5), width), 0.5), 0).rgb;
-#elif GROUND_LIGHTING == 2
+    g.skyIrradiance = ambientLight.SampleLevel(linearClamp, float2(unitToTexture(saturate(cosSunZenith * 0.5 + 0.5), width), 0.5), 0).rgb;
+    return g;
+}
+
+#if GROUND_LIGHTING == 2 || GROUND_LIGHTING == 3
+GroundLight brunetonGroundLight(float altitude, float cosSunZenith, Texture2D<float4> transmittance, Texture2D<float4> irradiance) {
+    GroundLight g;
     float r = atmosphere.earth.x + altitude;
-    g.sunTransmittance = sunTransmittanceAt(atmosphere, bruneton, sunTransmittanceTable, linearClamp, r, cosSunZenith);
-    g.skyIrradiance = irradianceAt(atmosphere, bruneton, skyIrradianceTable, linearClamp, r, cosSunZenith);
+    g.sunTransmittance = sunTransmittanceAt(atmosphere, bruneton, transmittance, linearClamp, r, cosSunZenith);
+    g.skyIrradiance = irradianceAt(atmosphere, bruneton, irradiance, linearClamp, r, cosSunZenith);
+    return g;
+}
+#endif
+
+// rightOfSplit: the split view's right side (GROUND_LIGHTING=3 only).
+GroundLight groundLight(float altitude, float cosSunZenith, bool rightOfSplit) {
+#if GROUND_LIGHTING == 1
+    return yusovGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
+#elif GROUND_LIGHTING == 2
+    return brunetonGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
+#elif GROUND_LIGHTING == 3
+    if (rightOfSplit) return brunetonGroundLight(altitude, cosSunZenith, brunetonTransmittanceTable, brunetonIrradianceTable);
+    return yusovGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
 #else
+    GroundLight g;
     g.sunTransmittance = cosSunZenith > 0.0 ? 1.0 : 0.0;
     g.skyIrradiance = kConstantSkyIrradiance * saturate(cosSunZenith * 4.0 + 0.25);
-#endif
     return g;
+#endif
 }
 
 // Outgoing radiance of a Lambertian surface, per unit sun irradiance (document 000's terrain

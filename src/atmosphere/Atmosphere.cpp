@@ -120,6 +120,13 @@ GroundLighting Atmosphere::groundLighting(ID3D11DeviceContext* context, const At
         g.model = GroundLightingModel::Yusov2013;
         g.sunTransmittance = yusov_.current->tables().netDensity.srv.Get();
         g.skyIrradiance = yusov_.current->tables().ambientLight.srv.Get();
+        if (settings.comparison == ModelComparison::Split) {  // both models read the same physical constants
+            groundBruneton_.update(context, bruneton_.current->parameters().constants());
+            g.model = GroundLightingModel::Split;
+            g.bruneton = groundBruneton_.get();
+            g.brunetonTransmittance = bruneton_.current->tables().transmittance.srv.Get();
+            g.brunetonIrradiance = bruneton_.current->tables().irradiance.srv.Get();
+        }
     } else {
         groundAtmosphere_.update(context, bruneton_.current->parameters().physics.constants());
         groundBruneton_.update(context, bruneton_.current->parameters().constants());

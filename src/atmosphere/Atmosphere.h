@@ -37,8 +37,9 @@ public:
     void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings, ID3D11Buffer* frameConstants,
                 const Texture2D& hdrFrame, ID3D11ShaderResourceView* depth);
 
-    // The tables that light the ground (terrain) for the model drawn (the left one when comparing);
-    // GroundLightingModel::None when scattering is off or the tables are not ready.
+    // The tables that light the ground (terrain) for the model drawn: both in the split view,
+    // Yusov's in the difference view; GroundLightingModel::None when scattering is off or the
+    // tables are not ready.
     GroundLighting groundLighting(ID3D11DeviceContext* context, const AtmosphereSettings& settings);
 
     // The tables the settings' model (or both, to compare) need exist.

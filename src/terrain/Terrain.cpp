@@ -125,15 +125,16 @@ void Terrain::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D1
     context->VSSetConstantBuffers(0, 5, buffers);
     context->PSSetConstantBuffers(0, 5, buffers);
     bindFieldTextures(context, true);
-    ID3D11ShaderResourceView* tables[3] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map};
-    context->PSSetShaderResources(2, 3, tables);
+    ID3D11ShaderResourceView* tables[5] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map, lighting.brunetonTransmittance,
+                                           lighting.brunetonIrradiance};
+    context->PSSetShaderResources(2, 5, tables);
     ID3D11SamplerState* samplers[3] = {linearClamp_.Get(), linearWrap_.Get(), shadows.comparison};
     context->PSSetSamplers(0, 3, samplers);
     context->VSSetShader(shaders.vertexShader(kVertexShader), nullptr, 0);
     context->PSSetShader(shaders.pixelShader(pixelShader(lighting.model)), nullptr, 0);
     drawLevels(context, static_cast<unsigned>(settings.view));
-    ID3D11ShaderResourceView* none[5] = {};
-    context->PSSetShaderResources(0, 5, none);
+    ID3D11ShaderResourceView* none[7] = {};
+    context->PSSetShaderResources(0, 7, none);
     context->VSSetShaderResources(0, 2, none);
     context->RSSetState(nullptr);
     context->OMSetDepthStencilState(nullptr, 0);

@@ -19,7 +19,7 @@ struct TerrainSettings {
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Terrain");
         v.choice("view", view, kTerrainViewNames, "Terrain view");
-        v.field("cameraClearance", cameraClearance, {0.0f, 1000.0f}, "Camera clearance above the ground (m)");
+        v.field("cameraClearance", cameraClearance, {0.0f, 1000.0f}, "Camera clearance (m)");
     }
 };
 

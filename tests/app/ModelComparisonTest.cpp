@@ -17,7 +17,7 @@ namespace {
 constexpr int kWidth = 64, kHeight = 40;
 
 // A small headless capture over the orientation grid at sunset, with `extra` settings. The
-// terrain is off: it is lit by one model's tables on both sides of a comparison.
+// terrain is off unless `extra` turns it on.
 ExrFile capture(const std::filesystem::path& folder, const std::string& name, std::vector<std::wstring> extra) {
     std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
                                    L"--set", L"camera.pitch=2", L"--set", L"sun.elevation=8", L"--set", L"atmosphere.lutResolution=small (8x32x16x8)",
@@ -57,6 +57,33 @@ TEST(ModelComparison, SplitAndDifferenceViewsAreMadeOfBothModels) {
     // The models differ somewhere (the ground, which only Bruneton's model lights itself): the
     // difference view is not black.
     EXPECT_GT(differing, kWidth * kHeight / 10);
+    std::filesystem::remove_all(folder);
+}
+
+// Over the terrain, the split view lights each side with its own model's tables as well: its
+// left half is exactly Yusov's frame, its right half Bruneton's, terrain and shadows included.
+TEST(ModelComparison, SplitViewLightsTheTerrainByEachModel) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-model-comparison-terrain";
+    std::filesystem::remove_all(folder);
+    const std::vector<std::wstring> terrain{L"--set", L"terrain.enabled=on", L"--set", L"camera.position=0,3000,0", L"--set", L"camera.pitch=-20",
+                                            L"--set", L"camera.yaw=40"};
+    const auto with = [&](const wchar_t* setting) {
+        std::vector<std::wstring> args = terrain;
+        args.insert(args.end(), {L"--set", setting});
+        return args;
+    };
+    const ExrFile yusov = capture(folder, "yusov", with(L"atmosphere.model=Yusov 2013"));
+    const ExrFile bruneton = capture(folder, "bruneton", with(L"atmosphere.model=Bruneton 2008"));
+    const ExrFile split = capture(folder, "split", with(L"atmosphere.comparison=split"));
+    int terrainDiffers = 0;
+    for (int y = kHeight / 2; y < kHeight; ++y)  // the lower half: terrain
+        for (int x = 0; x < kWidth; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float left = channel(yusov, x, y, c), right = channel(bruneton, x, y, c);
+                ASSERT_EQ(channel(split, x, y, c), x < kWidth / 2 ? left : right) << "split pixel " << x << "," << y;
+                if (std::abs(left - right) > 1e-3f * std::max(left, right)) ++terrainDiffers;
+            }
+    EXPECT_GT(terrainDiffers, kWidth * kHeight / 10);  // the two models do light it differently
     std::filesystem::remove_all(folder);
 }
 
