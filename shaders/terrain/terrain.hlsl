@@ -132,7 +132,7 @@ float4 ps_main(TerrainVertex input) : SV_Target {
     float altitude = world.y + earthDrop(p, terrain.field.w);
     float3 toSun = frame.directionToSun.xyz;
     float steepness = 1.0 - dot(normal, up);
-    float3 albedo = terrainAlbedo(altitude, steepness, p);
+    float3 albedo = terrainAlbedo(altitude, steepness, p, footprint);
 
     float viewDepth = dot(world - frame.cameraPosition.xyz, shadows.cameraForward.xyz);
     int cascade = -1;
