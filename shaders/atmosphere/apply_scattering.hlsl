@@ -75,7 +75,7 @@ float4 ps_main(FullscreenVertex input) : SV_Target {
 
     float offset;
     bool inAtmosphere = clipRayToAtmosphere(atmosphere, start, viewDir, offset);
-    bool geometry = depth < 1.0;
+    bool geometry = depth > 0.0;  // reversed Z: 0 is the far plane, where nothing was drawn
     float geometryDistance = 0.0;
     if (geometry) {
         float4 world = mul(frame.inverseViewProjection, float4(ndc, depth, 1.0));

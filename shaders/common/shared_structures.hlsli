@@ -29,9 +29,9 @@ struct FrameConstants {
     float4 time;                     // x: seconds since start; yzw: unused
     float4 sunIrradiance;            // rgb: the sun's irradiance above the atmosphere (relative
                                      // units: the atmosphere's tables are per unit of it); w: unused
-    float4 planet;                   // x: Earth radius (m), its centre at (0, -x, 0); y: how far the terrain
-                                     // reaches from the camera (m; 0 without terrain): the orientation
-                                     // grid's ground starts there; zw: unused
+    float4 planet;                   // x: Earth radius (m), its centre at (0, -x, 0); y: the half-width of
+                                     // the square the terrain covers (m; 0 without terrain), zw: its
+                                     // centre (x, z): the orientation grid's ground lies outside it
 };
 FIRMAMENT_CONSTANT_BUFFER(FrameConstants);
 

@@ -76,12 +76,12 @@ float4 ps_main(FullscreenVertex input, out float depth : SV_Depth) : SV_Target {
     if (distance <= 0.0) discard;
     float3 ground = frame.cameraPosition.xyz + direction * distance;
     // Under the terrain the grid would fight it in depth (the terrain's plains lie within
-    // metres of the sphere): the grid's ground starts where the terrain ends.
-    float2 fromCamera = ground.xz - frame.cameraPosition.xz;
-    if (dot(fromCamera, fromCamera) < frame.planet.y * frame.planet.y) discard;
+    // metres of the sphere): the grid's ground lies outside the terrain's square.
+    float2 fromTerrain = abs(ground.xz - frame.planet.zw);
+    if (max(fromTerrain.x, fromTerrain.y) < frame.planet.y) discard;
     float4 clip = mul(frame.viewProjection, float4(ground, 1.0));
     depth = saturate(clip.z / clip.w);
-    if (depth >= 1.0) discard;  // beyond the far plane: the sky pass sees the ground there
+    if (depth <= 0.0) discard;  // beyond the far plane (reversed Z): the sky pass sees the ground there
     float3 normal = normalize(ground + float3(0.0, radius, 0.0));
     float cosSun = dot(normal, frame.directionToSun.xyz);
     float light = saturate(cosSun) + kAmbientFraction * saturate(cosSun * 4.0 + 0.25);

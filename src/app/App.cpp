@@ -328,8 +328,9 @@ gpu::FrameConstants App::frameConstants() const {
                          1.0f / static_cast<float>(height_));
     c.time = glm::vec4(static_cast<float>(timer_.totalSeconds()), 0.0f, 0.0f, 0.0f);
     c.sunIrradiance = glm::vec4(glm::vec3(state_.atmosphere.sunIntensity), 0.0f);
-    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius),
-                         state_.terrain.enabled ? static_cast<float>(clipmapReach()) : 0.0f, 0.0f, 0.0f);
+    const ClipmapExtent terrain = clipmapExtent(glm::dvec2(state_.camera.position.x, state_.camera.position.z));
+    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), state_.terrain.enabled ? static_cast<float>(terrain.halfWidth) : 0.0f,
+                         static_cast<float>(terrain.centre.x), static_cast<float>(terrain.centre.y));
     return c;
 }
 
@@ -340,7 +341,7 @@ void App::renderFrame(bool drawGui) {
     {
         auto pass = profiler_.scope("Clear frame targets");
         context->ClearRenderTargetView(hdrFrame_.rtv.Get(), kBackground);
-        context->ClearDepthStencilView(depth_.dsv.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+        context->ClearDepthStencilView(depth_.dsv.Get(), D3D11_CLEAR_DEPTH, 0.0f, 0);  // reversed Z: 0 is the far plane
     }
     // Headless runs compute the atmosphere's tables before their first frame; a window spreads
     // the work over frames and shows the grid's own sky until the tables are ready.

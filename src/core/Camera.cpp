@@ -22,7 +22,9 @@ glm::mat4 Camera::view() const {
 }
 
 glm::mat4 Camera::projection(float aspectRatio) const {
-    return glm::perspectiveLH_ZO(glm::radians(verticalFovDegrees), aspectRatio, nearPlane, farPlane);
+    // Reversed Z: the planes swapped put depth 1 at the near plane and 0 at the far one, so that
+    // float depth's precision, densest near 0, goes to the far distances.
+    return glm::perspectiveLH_ZO(glm::radians(verticalFovDegrees), aspectRatio, farPlane, nearPlane);
 }
 
 void Camera::visit(SettingsVisitor& v) {

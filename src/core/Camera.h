@@ -1,6 +1,7 @@
 #pragma once
-// A perspective camera in Direct3D's conventions: left-handed, y up, x right, z forward,
-// clip-space depth from 0 (near) to 1 (far). Orientation is yaw about +y then pitch.
+// A perspective camera in Direct3D's conventions: left-handed, y up, x right, z forward, with
+// reversed Z: clip-space depth 1 at the near plane and 0 at the far plane (the depth buffer is
+// cleared to 0 and tested GREATER_EQUAL). Orientation is yaw about +y then pitch.
 // Angles are in degrees, as a person reads and types them in settings files.
 #include "core/Settings.h"
 

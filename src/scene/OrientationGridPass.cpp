@@ -14,7 +14,7 @@ OrientationGridPass::OrientationGridPass(ID3D11Device* device) : fullscreen_(dev
     D3D11_DEPTH_STENCIL_DESC desc{};
     desc.DepthEnable = TRUE;
     desc.DepthWriteMask = D3D11_DEPTH_WRITE_MASK_ALL;
-    desc.DepthFunc = D3D11_COMPARISON_LESS_EQUAL;
+    desc.DepthFunc = D3D11_COMPARISON_GREATER_EQUAL;  // reversed Z
     check(device->CreateDepthStencilState(&desc, &writeDepth_), "CreateDepthStencilState (orientation grid)");
 }
 

@@ -8,7 +8,11 @@ namespace firmament {
 
 int holeFirstCell(int offset) { return kClipmapCells / 4 + offset; }
 
-double clipmapReach() { return (kClipmapCells / 2 - 1) * kFinestSpacing * std::ldexp(1.0, kClipmapLevels - 1); }
+ClipmapExtent clipmapExtent(glm::dvec2 camera) {
+    const ClipmapLevel coarsest = clipmapLevels(camera, 0.0).back();
+    const double halfWidth = (kClipmapCells / 2) * coarsest.spacing;
+    return {coarsest.origin + halfWidth, halfWidth};
+}
 
 std::vector<ClipmapLevel> clipmapLevels(glm::dvec2 camera, double heightAboveGround) {
     constexpr int half = kClipmapCells / 2;

@@ -29,9 +29,13 @@ struct ClipmapLevel {
 // The levels to draw, finest first. heightAboveGround: metres, >= 0.
 std::vector<ClipmapLevel> clipmapLevels(glm::dvec2 camera, double heightAboveGround);
 
-// How far from the camera the terrain surely reaches in x and z: the coarsest level's half-width
-// less the one cell its snapping may shift it by (508 km).
-double clipmapReach();
+// The square the terrain covers around the camera: the coarsest level's, centre (x, z) and
+// half-width (524 km).
+struct ClipmapExtent {
+    glm::dvec2 centre{};
+    double halfWidth = 0;
+};
+ClipmapExtent clipmapExtent(glm::dvec2 camera);
 
 // The cells [first, first + kClipmapCells / 2) of each axis are the hole for this offset.
 int holeFirstCell(int offset);

@@ -67,7 +67,7 @@ Terrain::Terrain(ID3D11Device* device, HeightField field, double earthRadius)
     D3D11_DEPTH_STENCIL_DESC depth{};
     depth.DepthEnable = TRUE;
     depth.DepthWriteMask = D3D11_DEPTH_WRITE_MASK_ALL;
-    depth.DepthFunc = D3D11_COMPARISON_LESS_EQUAL;
+    depth.DepthFunc = D3D11_COMPARISON_GREATER_EQUAL;  // reversed Z (src/core/Camera.h)
     check(device->CreateDepthStencilState(&depth, &depthTest_), "CreateDepthStencilState (terrain)");
 }
 

@@ -1,4 +1,4 @@
-// Camera matrices against Direct3D's conventions: left-handed, depth 0 at near, 1 at far.
+// Camera matrices against Direct3D's conventions: left-handed, reversed Z (depth 1 at near, 0 at far).
 #include "core/Camera.h"
 
 #include <gtest/gtest.h>
@@ -13,14 +13,18 @@ glm::vec3 project(const glm::mat4& m, glm::vec3 p) {
     return glm::vec3(clip) / clip.w;
 }
 
-TEST(Camera, NearAndFarPlanesMapToDepthZeroAndOne) {
+// Reversed Z: the near plane at depth 1, the far plane at 0.
+TEST(Camera, NearAndFarPlanesMapToDepthOneAndZero) {
     Camera camera;
     camera.position = {0.0f, 0.0f, 0.0f};
     camera.nearPlane = 0.5f;
     camera.farPlane = 1000.0f;
     const glm::mat4 viewProjection = camera.projection(16.0f / 9.0f) * camera.view();
-    EXPECT_NEAR(project(viewProjection, {0, 0, 0.5f}).z, 0.0f, 1e-6f);
-    EXPECT_NEAR(project(viewProjection, {0, 0, 1000.0f}).z, 1.0f, 1e-5f);
+    EXPECT_NEAR(project(viewProjection, {0, 0, 0.5f}).z, 1.0f, 1e-6f);
+    EXPECT_NEAR(project(viewProjection, {0, 0, 1000.0f}).z, 0.0f, 1e-6f);
+    // Depth falls with distance, as n / z for a far plane much farther than the near one.
+    EXPECT_GT(project(viewProjection, {0, 0, 10.0f}).z, project(viewProjection, {0, 0, 20.0f}).z);
+    EXPECT_NEAR(project(viewProjection, {0, 0, 50.0f}).z, 0.5f / 50.0f * (1000.0f - 50.0f) / (1000.0f - 0.5f), 1e-6f);
 }
 
 TEST(Camera, VerticalFieldOfViewReachesTheTopEdge) {

@@ -70,8 +70,8 @@ float3 modelRadiance(int2 pixel, float2 uv) {
     if (r > rt) {
         float2 top = raySphere(x, v, rt);
         if (top.y <= 0.0 || top.x <= 0.0) {  // misses the atmosphere: space, the sun, geometry as it is
-            bool sunHere = depth >= 1.0 && dot(v, s) > composition.sun.x && raySphere(x, v, rg).y <= 0.0;
-            return depth < 1.0 ? scene : (sunHere ? sunIrradiance * composition.sun.y : 0.0);
+            bool sunHere = depth <= 0.0 && dot(v, s) > composition.sun.x && raySphere(x, v, rg).y <= 0.0;
+            return depth > 0.0 ? scene : (sunHere ? sunIrradiance * composition.sun.y : 0.0);
         }
         offset = top.x;
         x += v * offset;
@@ -88,19 +88,20 @@ float3 modelRadiance(int2 pixel, float2 uv) {
     float end = toGround ? groundDistance : distanceToTop(atmosphere, r, mu, rho2);
 
     // What the ray ends on: geometry nearer than the Earth, the Earth (the model's ground), or the sky.
-    bool geometry = depth < 1.0;
+    bool geometry = depth > 0.0;  // reversed Z: 0 is the far plane, where nothing was drawn
     float geometryDistance = end;
     bool modelGround = toGround;
     if (geometry) {
         float4 world = mul(frame.inverseViewProjection, float4(ndc, depth, 1.0));
         geometryDistance = length(world.xyz / world.w - frame.cameraPosition.xyz) - offset;
         if (geometryDistance <= 0.0) return scene;
-        // Geometry on the Earth's sphere is the Earth. The test is in depth, where the sphere's
-        // own depth and the stored one differ by rounding only: a distance rebuilt from the depth
-        // buffer is off by 0.1% and more beyond 10 km (standard Z: reversed-Z comes with the
-        // terrain), so a distance test would speckle.
+        // Geometry on the Earth's sphere (the orientation grid's ground) is the Earth. The test is
+        // in depth, where the sphere's own depth and the stored one differ by rounding only, a
+        // few parts in 1e7 with reversed Z. Both sides are bounded: terrain a few metres above or
+        // below the sphere stays geometry.
         float4 sphereClip = mul(frame.viewProjection, float4(frame.cameraPosition.xyz + v * (offset + groundDistance), 1.0));
-        modelGround = toGround && depth >= sphereClip.z / sphereClip.w - 1e-6;
+        float sphereDepth = sphereClip.z / sphereClip.w;
+        modelGround = toGround && abs(depth - sphereDepth) <= 1e-5 * sphereDepth;
     }
     bool otherGeometry = geometry && !modelGround;
     float t = otherGeometry ? min(geometryDistance, end) : end;
