@@ -9,7 +9,6 @@
 #include "gpu/PrecompiledShaders.h"
 #include "gpu/SourceShaderCompilers.h"
 #include "terrain/HeightFieldFile.h"
-#include "terrain/TerrainSurface.h"
 #include "FirmamentVersion.h"
 
 #include <cmath>
@@ -290,8 +289,7 @@ void App::update() {
 void App::keepCameraAboveGround() {
     if (!state_.terrain.enabled || state_.terrain.cameraClearance <= 0.0f) return;
     const glm::dvec3 p = state_.camera.position;
-    const double ground = terrain_.groundHeight(p.x, p.z) - earthDrop(p.x, p.z, AtmosphereParameters{}.earthRadius);
-    const double lowest = ground + state_.terrain.cameraClearance;
+    const double lowest = terrain_.groundY(p.x, p.z) + state_.terrain.cameraClearance;
     if (p.y < lowest) state_.camera.position.y = static_cast<float>(lowest);
 }
 

@@ -114,8 +114,7 @@ void Atmosphere::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, co
 GroundLighting Atmosphere::groundLighting(ID3D11DeviceContext* context, const AtmosphereSettings& settings) {
     GroundLighting g;
     if (!settings.enabled || !ready(settings)) return g;
-    const bool yusov = settings.comparison != ModelComparison::None || settings.model == AtmosphereModel::Yusov2013;
-    if (yusov) {
+    if (usesYusov(settings)) {  // Yusov's model, or a comparison (its left side)
         groundAtmosphere_.update(context, yusov_.current->parameters().constants());
         g.model = GroundLightingModel::Yusov2013;
         g.sunTransmittance = yusov_.current->tables().netDensity.srv.Get();

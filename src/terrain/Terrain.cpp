@@ -16,8 +16,8 @@ ShaderKey pixelShader(GroundLightingModel model) {
     return {"terrain/terrain.hlsl", "ps_main", "ps_5_0", {"GROUND_LIGHTING=" + std::to_string(static_cast<int>(model))}};
 }
 
-// A square texture with a full mip chain from `mips` (texels of `texelBytes` each, mip m of
-// size >> m), readable by shaders.
+// A square texture with a full mip chain from `mips` (mip m of size >> m texels a side),
+// readable by shaders.
 template <typename Texel>
 Texture2D createMipmappedTexture(ID3D11Device* device, DXGI_FORMAT format, int size, const std::vector<std::vector<Texel>>& mips) {
     D3D11_TEXTURE2D_DESC desc{};
@@ -72,6 +72,8 @@ Terrain::Terrain(ID3D11Device* device, HeightField field, double earthRadius)
 }
 
 double Terrain::groundHeight(double x, double z) const { return surfaceHeight(field_, x, z, kFinestSpacing); }
+
+double Terrain::groundY(double x, double z) const { return groundHeight(x, z) - earthDrop(x, z, earthRadius_); }
 
 void Terrain::place(glm::dvec3 camera) {
     const double altitude = camera.y + earthDrop(camera.x, camera.z, earthRadius_);

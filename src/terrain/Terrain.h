@@ -26,6 +26,8 @@ public:
     ID3D11ShaderResourceView* heightFieldView() const { return heights_.srv.Get(); }  // R32_FLOAT, mip-mapped
     // Height above the sea-level sphere of the finest surface at (x, z).
     double groundHeight(double x, double z) const;
+    // World y of that surface: the height less the Earth's drop.
+    double groundY(double x, double z) const;
     // Lowest and highest surface altitude (the shadow cascades' depth range).
     double minAltitude() const { return field_.minHeight() - 2.0; }
     double maxAltitude() const { return field_.maxHeight() + 2.0; }
