@@ -19,7 +19,7 @@ float2 raySphere(float3 origin, float3 dir, float radius) {
 }
 
 // Cosine of the zenith angle of the horizon seen from altitude h: rays with a smaller cosine
-// hit the ground (document 000, after eq. 5: c_h = -sqrt(h (2R + h)) / (R + h)).
+// hit the ground (Yusov 2013, after eq. 5: c_h = -sqrt(h (2R + h)) / (R + h)).
 float cosHorizon(AtmosphereConstants a, float h) {
     h = max(h, 0.0);
     return -sqrt(h * (2.0 * a.earth.x + h)) / (a.earth.x + h);
@@ -43,7 +43,7 @@ float rayleighPhase(float cosTheta) {
     return 3.0 / (16.0 * kPi) * (1.0 + cosTheta * cosTheta);
 }
 
-// Cornette-Shanks phase function for aerosols (document 000's sample; Bruneton 2008, eq. 4):
+// Cornette-Shanks phase function for aerosols (Yusov 2013's sample; Bruneton 2008, eq. 4):
 // 3 / (8 pi) (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^1.5).
 float miePhase(float cosTheta, float g) {
     float g2 = g * g;

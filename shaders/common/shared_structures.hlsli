@@ -85,14 +85,14 @@ struct AtmosphereConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(AtmosphereConstants);
 
-// atmosphere/apply_scattering.hlsl
-struct ScatteringPassConstants {
+// atmosphere/yusov/render.hlsl
+struct YusovPassConstants {
     uint4 mode;  // x: single scattering (0 none, 1 integration, 2 table); y: integration steps;
                  // z: multiple scattering (0 none, 1 occluded: the multiple table alone, 2 unoccluded:
                  // single scattering plus the high-order table); w: unused
     float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
 };
-FIRMAMENT_CONSTANT_BUFFER(ScatteringPassConstants);
+FIRMAMENT_CONSTANT_BUFFER(YusovPassConstants);
 
 // atmosphere/bruneton/*: Bruneton and Neyret 2008's tables (src/atmosphere/bruneton).
 struct BrunetonConstants {
@@ -111,7 +111,7 @@ struct BrunetonPassConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(BrunetonPassConstants);
 
-// atmosphere/precompute_*.hlsl: the part of a table one dispatch fills.
+// atmosphere/yusov/precompute_*.hlsl: the part of a table one dispatch fills.
 struct PrecomputeSliceConstants {
     uint4 range;  // x: first z slice; y: one past the last; zw: unused
 };

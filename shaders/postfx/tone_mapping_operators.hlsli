@@ -1,6 +1,6 @@
 #ifndef FIRMAMENT_TONE_MAPPING_OPERATORS_HLSLI
 #define FIRMAMENT_TONE_MAPPING_OPERATORS_HLSLI
-// The seven tone mapping operators of document 000 ("Tone mapping"), from scaled radiance to
+// The seven tone mapping operators of Yusov 2013 ("Tone mapping"), from scaled radiance to
 // display values. docs/tonemapping.md gives each formula with its source; the CPU reference
 // (src/postfx/ToneMappingCurves.cpp) computes the same in double precision for the tests.
 //

@@ -1,19 +1,19 @@
 #ifndef FIRMAMENT_TERRAIN_GROUND_LIGHTING_HLSLI
 #define FIRMAMENT_TERRAIN_GROUND_LIGHTING_HLSLI
 // Light reaching a point of the ground, per unit sun irradiance above the atmosphere
-// (document 000, "Terrain shaders"): the sun's light attenuated by the atmosphere's transmittance
+// (Yusov 2013, "Terrain shaders"): the sun's light attenuated by the atmosphere's transmittance
 // from the point to the top, and the ambient sky light, the irradiance the whole sky gives a
 // horizontal surface. Read from the tables of the model that draws the sky:
 //   GROUND_LIGHTING=0  no atmosphere: the sun unattenuated above the horizon, and a constant sky
 //                      irradiance of kConstantSkyIrradiance (the orientation grid's stand-in);
 //   GROUND_LIGHTING=1  Yusov 2013: the net density table and the ambient sky light table;
-//   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table;
-//   GROUND_LIGHTING=3  the split view: Yusov's tables left of the split, Bruneton's right of it.
-// Callers declare cbuffers `atmosphere` (AtmosphereConstants) and, for 2 and 3, `bruneton`, the
-// tables `sunTransmittanceTable`, `skyIrradianceTable` (Yusov's for 3), for 3 also
-// `brunetonTransmittanceTable` and `brunetonIrradianceTable`, and the sampler `linearClamp`.
-#include "atmosphere/lut_lookup.hlsli"
-#if GROUND_LIGHTING == 2 || GROUND_LIGHTING == 3
+//   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table.
+// (A comparison of the two models draws the ground once per model, each clipped to its side of
+// the frame: src/atmosphere/GroundLighting.h.)
+// Callers declare cbuffers `atmosphere` (AtmosphereConstants) and, for 2, `bruneton`, the
+// tables `sunTransmittanceTable` and `skyIrradianceTable`, and the sampler `linearClamp`.
+#include "atmosphere/yusov/lookup.hlsli"
+#if GROUND_LIGHTING == 2
 #include "atmosphere/bruneton/lookup.hlsli"
 #endif
 
@@ -34,7 +34,7 @@ GroundLight yusovGroundLight(float altitude, float cosSunZenith, Texture2D<float
     return g;
 }
 
-#if GROUND_LIGHTING == 2 || GROUND_LIGHTING == 3
+#if GROUND_LIGHTING == 2
 GroundLight brunetonGroundLight(float altitude, float cosSunZenith, Texture2D<float4> transmittance, Texture2D<float4> irradiance) {
     GroundLight g;
     float r = atmosphere.earth.x + altitude;
@@ -44,15 +44,11 @@ GroundLight brunetonGroundLight(float altitude, float cosSunZenith, Texture2D<fl
 }
 #endif
 
-// rightOfSplit: the split view's right side (GROUND_LIGHTING=3 only).
-GroundLight groundLight(float altitude, float cosSunZenith, bool rightOfSplit) {
+GroundLight groundLight(float altitude, float cosSunZenith) {
 #if GROUND_LIGHTING == 1
     return yusovGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
 #elif GROUND_LIGHTING == 2
     return brunetonGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
-#elif GROUND_LIGHTING == 3
-    if (rightOfSplit) return brunetonGroundLight(altitude, cosSunZenith, brunetonTransmittanceTable, brunetonIrradianceTable);
-    return yusovGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
 #else
     GroundLight g;
     g.sunTransmittance = cosSunZenith > 0.0 ? 1.0 : 0.0;
@@ -61,7 +57,7 @@ GroundLight groundLight(float altitude, float cosSunZenith, bool rightOfSplit) {
 #endif
 }
 
-// Outgoing radiance of a Lambertian surface, per unit sun irradiance (document 000's terrain
+// Outgoing radiance of a Lambertian surface, per unit sun irradiance (Yusov 2013's terrain
 // shading): albedo / pi * (T_sun * max(N.L, 0) * visibility + E_sky * (1 + N.up) / 2), the last
 // factor the ground plane's occlusion of the sky for a surface tilted away from the vertical.
 float3 lambertianRadiance(float3 albedo, float3 normal, float3 up, float3 directionToSun, float sunVisibility, GroundLight light) {

@@ -5,9 +5,9 @@
 // coarser level takes the finer one's edge vertices into its own triangles: the two meet
 // without cracks or T-junctions. The pixel shader shades with the height field's slopes and the detail
 // noise's, a material by slope and altitude, the sun attenuated by the atmosphere and shadowed by
-// the cascades, and the ambient sky light (document 000, "Terrain shaders").
+// the cascades, and the ambient sky light (Yusov 2013, "Terrain shaders").
 //   vs_main + ps_main: the HDR frame, with depth; GROUND_LIGHTING selects the tables (0 none,
-//   1 Yusov's, 2 Bruneton's, 3 both for the split view).
+//   1 Yusov's, 2 Bruneton's).
 //   vs_depth: depth only, for the shadow cascades.
 #ifndef GROUND_LIGHTING
 #define GROUND_LIGHTING 0
@@ -26,8 +26,6 @@ Texture2D<float2> slopeField : register(t1);  // (dh/dx, dh/dz), mip-mapped
 Texture2D<float4> sunTransmittanceTable : register(t2);
 Texture2D<float4> skyIrradianceTable : register(t3);
 Texture2D<float> shadowMap : register(t4);
-Texture2D<float4> brunetonTransmittanceTable : register(t5);  // GROUND_LIGHTING=3: the split view's right side
-Texture2D<float4> brunetonIrradianceTable : register(t6);
 SamplerState linearClamp : register(s0);
 SamplerState linearWrap : register(s1);
 SamplerComparisonState shadowComparison : register(s2);
@@ -145,8 +143,7 @@ float4 ps_main(TerrainVertex input) : SV_Target {
         case 3: return float4(cascadeTint((int)terrain.grid.y % 8), 1.0);
         default: break;
     }
-    bool rightOfSplit = (uint)input.position.x >= (uint)frame.screen.x / 2u;  // as the atmosphere's split view
-    GroundLight light = groundLight(altitude, dot(up, toSun), rightOfSplit);
+    GroundLight light = groundLight(altitude, dot(up, toSun));
     float3 radiance = lambertianRadiance(albedo, normal, up, toSun, visibility, light) * frame.sunIrradiance.rgb;
     return float4(radiance, 1.0);
 }

@@ -1,14 +1,13 @@
 #include "app/App.h"
 
 #include "app/Capture.h"
+#include "atmosphere/SunAnimation.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "core/Log.h"
-#include "atmosphere/SunAnimation.h"
 #include "core/SettingsJson.h"
 #include "gpu/PrecompiledShaders.h"
 #include "gpu/SourceShaderCompilers.h"
-#include "terrain/HeightFieldFile.h"
 #include "FirmamentVersion.h"
 
 #include <cmath>
@@ -19,9 +18,6 @@ namespace firmament {
 
 namespace {
 
-// Until the sky and the terrain draw, the HDR frame holds this clear value (linear radiance)
-// wherever the orientation grid is off.
-constexpr float kBackground[4] = {0.02f, 0.025f, 0.035f, 1.0f};
 constexpr double kSourcePollSeconds = 0.25;  // shader files are checked four times a second
 
 std::filesystem::path executableFolder() {
@@ -46,7 +42,7 @@ const Options& checkedOptions(const Options& options) {
     return options;
 }
 
-// The cache of the atmosphere's tables: --cache-dir, else %LOCALAPPDATA%\Firmament\cache,
+// The cache of the pre-computed tables: --cache-dir, else %LOCALAPPDATA%\Firmament\cache,
 // else a "cache" folder beside the program.
 TableStorage tableStorage(const Options& options) {
     TableStorage storage;
@@ -87,14 +83,7 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
                                                          [this](UINT m, WPARAM w, LPARAM l) { onInput(m, w, l); }})),
       device_(deviceOptions(options_)),
       shaders_(device_.device(), std::move(shaderSource_)),
-      profiler_(device_.device(), device_.context()),
-      frameConstantBuffer_(device_.device()),
-      orientationGrid_(device_.device()),
-      atmosphere_(device_.device(), tableStorage(options_)),
-      terrain_(device_.device(), loadOrGenerateHeightField(TerrainGeneratorParameters{}, tableStorage(options_).cacheFolder),
-               AtmosphereParameters{}.earthRadius),
-      shadows_(device_.device()),
-      toneMapping_(device_.device()),
+      renderer_(device_.device(), device_.context(), shaders_, tableStorage(options_)),
       flight_(std::move(flight)) {
     log::info("device: " + device_.describe());
     if (options_.recordFlight) ensureWritable(*options_.recordFlight);
@@ -120,27 +109,16 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
     if (!options_.headless)
         swapChain_ = std::make_unique<SwapChain>(device_, window_->handle(), options_.width, options_.height);
     overlay_ = std::make_unique<Overlay>(window_->handle(), device_.device(), device_.context());
-    createFrameTargets(options_.width, options_.height);
+    renderer_.resize(options_.width, options_.height, !swapChain_);
     if (options_.headless) timer_.setFixedStep(1.0 / 60.0);  // every headless run sees the same times
 }
 
-void App::createFrameTargets(int width, int height) {
-    ID3D11Device* device = device_.device();
-    hdrFrame_ = createColorTexture(device, width, height, DXGI_FORMAT_R16G16B16A16_FLOAT,
-                                   D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE);
-    depth_ = createDepthTexture(device, width, height);
-    if (!swapChain_)
-        offscreenOutput_ = createColorTexture(device, width, height, SwapChain::kFormat, D3D11_BIND_RENDER_TARGET);
-    width_ = width;
-    height_ = height;
-}
-
 ID3D11RenderTargetView* App::outputTarget() const {
-    return swapChain_ ? swapChain_->backBufferRtv() : offscreenOutput_.rtv.Get();
+    return swapChain_ ? swapChain_->backBufferRtv() : renderer_.targets().output().rtv.Get();
 }
 
 ID3D11Texture2D* App::outputTexture() const {
-    return swapChain_ ? swapChain_->backBuffer() : offscreenOutput_.texture.Get();
+    return swapChain_ ? swapChain_->backBuffer() : renderer_.targets().output().texture.Get();
 }
 
 void App::setNotice(std::string text, bool isError) {
@@ -231,9 +209,9 @@ int App::run() {
             --frame;
             continue;
         }
-        if (swapChain_ && (window_->clientWidth() != width_ || window_->clientHeight() != height_)) {
+        if (swapChain_ && (window_->clientWidth() != renderer_.targets().width() || window_->clientHeight() != renderer_.targets().height())) {
             swapChain_->resize(window_->clientWidth(), window_->clientHeight());
-            createFrameTargets(swapChain_->width(), swapChain_->height());
+            renderer_.resize(swapChain_->width(), swapChain_->height(), false);
         }
         timer_.tick();
         update();
@@ -285,128 +263,67 @@ void App::update() {
         recording_.add(now, state_.camera, state_.sun);
 }
 
-// Document 000's sample keeps the camera at least 100 m above the terrain (terrain.cameraClearance).
+// Yusov 2013's sample keeps the camera at least 100 m above the terrain (terrain.cameraClearance).
 void App::keepCameraAboveGround() {
     if (!state_.terrain.enabled || state_.terrain.cameraClearance <= 0.0f) return;
     const glm::dvec3 p = state_.camera.position;
-    const double lowest = terrain_.groundY(p.x, p.z) + state_.terrain.cameraClearance;
+    const double lowest = renderer_.groundY(p.x, p.z) + state_.terrain.cameraClearance;
     if (p.y < lowest) state_.camera.position.y = static_cast<float>(lowest);
 }
 
-// The shadow cascades (the terrain is their only caster for now), then the lit terrain.
-void App::renderTerrain(ID3D11DeviceContext* context) {
-    terrain_.place(glm::dvec3(state_.camera.position));
-    const glm::dvec3 toSun = glm::dvec3(state_.sun.direction());
-    // Casters may stand as far towards the sun as the highest peak can be seen above the sun's
-    // elevation, within 200 km.
-    const double reach = std::min((terrain_.maxAltitude() - terrain_.minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
-    shadows_.update(context, state_.camera, static_cast<double>(width_) / height_, toSun, state_.shadows, reach);
-    if (!shadows_.cascades().empty()) {
-        auto pass = profiler_.scope("Shadow cascades");
-        shadows_.render(context, [&](ID3D11Buffer* caster) { terrain_.renderDepth(context, shaders_, caster); });
-    }
-    auto pass = profiler_.scope("Terrain");
-    const GroundLighting lighting = atmosphere_.groundLighting(context, state_.atmosphere);
-    terrain_.render(context, shaders_, frameConstantBuffer_.get(), lighting, shadows_.inputs(), state_.terrain, hdrFrame_.rtv.Get(),
-                    depth_.dsv.Get(), width_, height_);
-}
-
-gpu::FrameConstants App::frameConstants() const {
-    const glm::mat4 projection = state_.camera.projection(static_cast<float>(width_) / static_cast<float>(height_));
-    const glm::mat4 viewProjection = projection * state_.camera.view();
-    glm::mat4 rotationOnly = state_.camera.view();
-    rotationOnly[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    gpu::FrameConstants c{};
-    c.viewProjection = viewProjection;
-    c.inverseViewProjection = glm::inverse(viewProjection);
-    c.clipToDirection = glm::inverse(projection * rotationOnly);
-    c.cameraPosition = glm::vec4(state_.camera.position, state_.camera.position.y);
-    c.directionToSun = glm::vec4(state_.sun.direction(), 0.0f);
-    c.screen = glm::vec4(static_cast<float>(width_), static_cast<float>(height_), 1.0f / static_cast<float>(width_),
-                         1.0f / static_cast<float>(height_));
-    c.time = glm::vec4(static_cast<float>(timer_.totalSeconds()), 0.0f, 0.0f, 0.0f);
-    c.sunIrradiance = glm::vec4(glm::vec3(state_.atmosphere.sunIntensity), 0.0f);
-    const ClipmapExtent terrain = clipmapExtent(glm::dvec2(state_.camera.position.x, state_.camera.position.z));
-    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), state_.terrain.enabled ? static_cast<float>(terrain.halfWidth) : 0.0f,
-                         static_cast<float>(terrain.centre.x), static_cast<float>(terrain.centre.y));
-    return c;
-}
-
+// The GUI is built first (its edits apply to this frame), then the renderer draws the frame in
+// its order with the GUI as the last pass.
 void App::renderFrame(bool drawGui) {
     ID3D11DeviceContext* context = device_.context();
-    profiler_.beginFrame();
-    frameConstantBuffer_.update(context, frameConstants());
-    {
-        auto pass = profiler_.scope("Clear frame targets");
-        context->ClearRenderTargetView(hdrFrame_.rtv.Get(), kBackground);
-        context->ClearDepthStencilView(depth_.dsv.Get(), D3D11_CLEAR_DEPTH, 0.0f, 0);  // reversed Z: 0 is the far plane
-    }
-    // Headless runs compute the atmosphere's tables before their first frame; a window spreads
-    // the work over frames and shows the grid's own sky until the tables are ready.
-    if (state_.atmosphere.enabled) atmosphere_.update(context, shaders_, profiler_, state_.atmosphere, options_.headless);
-    const bool scattering = state_.atmosphere.enabled && atmosphere_.ready(state_.atmosphere);
-    if (state_.scene.orientationGrid) {
-        auto pass = profiler_.scope("Orientation grid");
-        if (scattering)
-            orientationGrid_.renderGround(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), depth_.dsv.Get(), width_, height_);
-        else
-            orientationGrid_.render(context, shaders_, frameConstantBuffer_.get(), hdrFrame_.rtv.Get(), width_, height_);
-    }
-    if (state_.terrain.enabled) renderTerrain(context);
-    if (scattering) {
-        auto pass = profiler_.scope("Light scattering");
-        atmosphere_.render(context, shaders_, state_.atmosphere, frameConstantBuffer_.get(), hdrFrame_, depth_.srv.Get());
-    }
-    toneMapping_.render(context, shaders_, profiler_, state_.toneMapping, hdrFrame_.srv.Get(), outputTarget(), width_, height_,
-                        timer_.deltaSeconds());
+    const RendererStatus status = renderer_.status(state_);
     std::vector<std::string> devices = hidDevices_.connectedNames();
     for (int i = 0; i < xinputPads_.connectedCount(); ++i) devices.push_back("Xbox pad (XInput)");
+    const FrameTargets& targets = renderer_.targets();
     GuiModel model{state_,
-                   FrameStats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), width_, height_, device_.adapterName()},
-                   profiler_.timings(),
+                   FrameStats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), targets.width(), targets.height(), device_.adapterName()},
+                   renderer_.profiler().timings(),
                    frameTimes_,
                    shaders_.errors(),
                    shaders_.sourceCompiler() ? shaders_.sourceCompiler()->name() : std::string(),
                    std::move(devices),
                    notice_,
                    noticeIsError_,
-                   toneMapping_.latestReading(context, state_.toneMapping),
-                   atmosphere_.recomputeProgress()};
-    handleRequests(overlay_->build(model));
-    if (drawGui) {
-        auto pass = profiler_.scope("GUI");
-        overlay_->render(context, outputTarget());
-    }
-    profiler_.endFrame();
+                   status.exposure,
+                   status.atmosphereProgress};
+    const GuiRequests requests = overlay_->build(model);
+    const auto gui = [&](ID3D11RenderTargetView* output) { overlay_->render(context, output); };
+    renderer_.render(state_, FrameTime{timer_.totalSeconds(), timer_.deltaSeconds()}, options_.headless, outputTarget(),
+                     drawGui ? std::function<void(ID3D11RenderTargetView*)>(gui) : nullptr);
+    handleRequests(requests);
 }
 
 void App::captureFrame() {
     ID3D11Device* device = device_.device();
     ID3D11DeviceContext* context = device_.context();
+    const FrameTargets& targets = renderer_.targets();
     CaptureDescription d;
     d.view = state_.camera.view();
-    d.projection = state_.camera.projection(static_cast<float>(width_) / static_cast<float>(height_));
+    d.projection = state_.camera.projection(static_cast<float>(targets.width()) / static_cast<float>(targets.height()));
     d.directionToSun = state_.sun.direction();
     d.settings = stateToJson(state_).dump(2);
     d.adapter = device_.describe();
     d.frame = static_cast<int>(timer_.frameCount());
-    d.techniques = toneMapping_.captureAttributes(device, context, state_.toneMapping);
-    if (state_.atmosphere.enabled) d.techniques.merge(atmosphere_.captureAttributes(state_.atmosphere));
+    d.techniques = renderer_.captureAttributes(state_);
     writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),
-                 readTexture2D(device, context, hdrFrame_.texture.Get()), d);
+                 readTexture2D(device, context, targets.hdr().texture.Get()), d);
     log::info("captured " + options_.capturePng().string() + " and " + options_.captureExr().string());
 }
 
 void App::printTimings() {
-    profiler_.flush();
-    std::printf("GPU time per pass over %llu frames at %dx%d on %s:\n",
-                static_cast<unsigned long long>(timer_.frameCount()), width_, height_, device_.describe().c_str());
+    GpuProfiler& profiler = renderer_.profiler();
+    profiler.flush();
+    std::printf("GPU time per pass over %llu frames at %dx%d on %s:\n", static_cast<unsigned long long>(timer_.frameCount()),
+                renderer_.targets().width(), renderer_.targets().height(), device_.describe().c_str());
     std::printf("  %-24s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
-    for (const PassTiming& t : profiler_.timings())
+    for (const PassTiming& t : profiler.timings())
         std::printf("  %-24s %10.3f %10.3f %10.3f\n", t.name.c_str(), t.meanMs, t.minMs, t.maxMs);
-    if (profiler_.disjointFrames())
-        std::printf("  (%llu frames had unreliable timestamps and were left out)\n",
-                    static_cast<unsigned long long>(profiler_.disjointFrames()));
+    if (profiler.disjointFrames())
+        std::printf("  (%llu frames had unreliable timestamps and were left out)\n", static_cast<unsigned long long>(profiler.disjointFrames()));
     std::fflush(stdout);
 }
 

@@ -1,26 +1,18 @@
 #pragma once
-// The program: window, device, swap chain (or an off-screen target when headless), the
-// frame targets, input, and the passes run in frame order. Owns nothing a technique can own.
+// The program: the window, the device and swap chain, input, the frame loop, flights,
+// and captures. The frame itself, every technique and its order, is the Renderer's.
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
-#include "app/State.h"
 #include "app/StepTimer.h"
 #include "app/Window.h"
-#include "atmosphere/Atmosphere.h"
-#include "gpu/ConstantBuffer.h"
 #include "gpu/Device.h"
-#include "gpu/GpuProfiler.h"
 #include "gpu/ShaderLibrary.h"
-#include "gpu/SharedStructures.h"
 #include "gpu/SwapChain.h"
-#include "gpu/Texture.h"
 #include "input/HidDevices.h"
 #include "input/KeyboardMouse.h"
 #include "input/XInputPads.h"
-#include "postfx/ToneMapping.h"
-#include "scene/OrientationGridPass.h"
-#include "shadows/CascadedShadowMaps.h"
-#include "terrain/Terrain.h"
+#include "render/Renderer.h"
+#include "settings/State.h"
 #include "ui/FrameTimeHistory.h"
 #include "ui/Overlay.h"
 
@@ -35,11 +27,9 @@ public:
     int run();                                         // returns the exit code
 
 private:
-    void createFrameTargets(int width, int height);
     void update();
     void renderFrame(bool drawGui);
     void captureFrame();
-    void renderTerrain(ID3D11DeviceContext* context);
     void keepCameraAboveGround();
     void printTimings();
     void onKey(WPARAM key);
@@ -49,7 +39,6 @@ private:
     void saveState();
     void loadState();
     void setNotice(std::string text, bool isError);
-    gpu::FrameConstants frameConstants() const;
     ID3D11RenderTargetView* outputTarget() const;
     ID3D11Texture2D* outputTexture() const;
 
@@ -60,26 +49,12 @@ private:
     Device device_;
     std::unique_ptr<SwapChain> swapChain_;  // null when headless
     ShaderLibrary shaders_;
-    GpuProfiler profiler_;
-    ConstantBuffer<gpu::FrameConstants> frameConstantBuffer_;
-    OrientationGridPass orientationGrid_;
-    Atmosphere atmosphere_;
-    Terrain terrain_;
-    CascadedShadowMaps shadows_;
-    ToneMapping toneMapping_;
+    Renderer renderer_;
     std::unique_ptr<Overlay> overlay_;
 
     KeyboardMouse keyboardMouse_;
     HidDevices hidDevices_;
     XInputPads xinputPads_;
-
-    // Frame targets: HDR radiance (RGBA16F) with depth; headless runs also own the 8-bit
-    // output target that the swap chain's back buffer is otherwise.
-    Texture2D hdrFrame_;
-    Texture2D depth_;
-    Texture2D offscreenOutput_;
-    int width_ = 0;
-    int height_ = 0;
 
     std::optional<FlightPath> flight_;
     FlightPath recording_;

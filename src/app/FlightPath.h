@@ -5,7 +5,7 @@
 // azimuth the short way round).
 //
 //   {"format": 1, "keyframes": [{"time": 0, "camera": {...}, "sun": {...}}, ...]}
-#include "app/State.h"
+#include "settings/State.h"
 
 #include <filesystem>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "app/App.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
-#include "app/State.h"
+#include "settings/State.h"
 #include "core/Error.h"
 #include "core/Log.h"
 #include "FirmamentVersion.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The physical model of the atmosphere (document 000, after Bruneton and Neyret 2008): a
+// The physical model of the atmosphere (Yusov 2013, after Bruneton and Neyret 2008): a
 // spherical Earth under an atmosphere of air molecules (Rayleigh) and aerosols (Mie), each with
 // a density that falls exponentially with altitude, and an optional ozone layer that absorbs.
 // Every constant lives here; the shaders get them through AtmosphereConstants
@@ -54,7 +54,7 @@ struct AtmosphereParameters {
     ExrAttributes exrAttributes() const;
 };
 
-// Physical coefficients at the default settings (Intel's sample, document 000), and the
+// Physical coefficients at the default settings (Intel's sample, Yusov 2013), and the
 // scales of the custom colours: colour * scale = coefficient.
 inline constexpr double kRayleighColourScale = 4.0e-5;  // (0.145, 0.3375, 0.8276) gives (5.8, 13.5, 33.1)e-6
 inline constexpr double kMieColourScale = 2.0e-5;

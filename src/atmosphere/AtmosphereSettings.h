@@ -1,6 +1,6 @@
 #pragma once
 // Settings of the atmosphere (section "atmosphere"): the physical parameters a person changes
-// (document 000's Additional panel: aerosol density and absorption, custom scattering colours)
+// (Yusov 2013's Additional panel: aerosol density and absorption, custom scattering colours)
 // and the pre-computation's resolution. Changing any of them recomputes the look-up tables.
 #include "core/Settings.h"
 
@@ -12,19 +12,19 @@
 namespace firmament {
 
 enum class LutResolution { Small, Medium, Full };
-// Which model draws the atmosphere: Yusov's update of Intel's sample (document 000), or
-// Bruneton and Neyret's 2008 model (document 002), from the same physical parameters.
+// Which model draws the atmosphere: Yusov's update of Intel's sample, or
+// Bruneton and Neyret's 2008 model, from the same physical parameters.
 enum class AtmosphereModel { Yusov2013, Bruneton2008 };
 inline constexpr std::array<std::string_view, 2> kAtmosphereModelNames{"Yusov 2013", "Bruneton 2008"};
 // Both models at once: Yusov's on the left half and Bruneton's on the right (Split), or the
 // absolute difference of their radiance (Difference), which tone mapping then shows.
 enum class ModelComparison { None, Split, Difference };
 inline constexpr std::array<std::string_view, 3> kModelComparisonNames{"None", "Split", "Difference"};
-// Where single scattering comes from at render time (document 000's Additional panel); the
-// order is the shader's mode index (shaders/atmosphere/apply_scattering.hlsl).
+// Where single scattering comes from at render time (Yusov 2013's Additional panel); the
+// order is the shader's mode index (shaders/atmosphere/yusov/render.hlsl).
 enum class SingleScatteringMode { None, Integration, Table };
 inline constexpr std::array<std::string_view, 3> kSingleScatteringModeNames{"None", "Integration", "LUT"};
-// Higher orders (document 000, "Occluded vs unoccluded"): none; occluded, the multiple
+// Higher orders (Yusov 2013, "Occluded vs unoccluded"): none; occluded, the multiple
 // scattering table alone (single scattering from it too); unoccluded, single scattering as
 // its mode says plus the high-order table.
 enum class MultipleScatteringMode { None, Occluded, Unoccluded };
@@ -50,7 +50,7 @@ struct AtmosphereSettings {
     // kMieColourScale * aerosol density. The defaults give back the physical coefficients.
     glm::vec3 rayleighColour{0.145015f, 0.337539f, 0.827619f};
     glm::vec3 mieColour{1.0f, 1.0f, 1.0f};
-    bool ozone = false;              // an absorbing ozone layer (Bruneton 2017), beyond document 000
+    bool ozone = false;              // an absorbing ozone layer (Bruneton 2017), beyond Yusov 2013
     bool animateSun = false;         // the sun turns about the x axis (SunAnimation.h)
     LutResolution resolution = LutResolution::Full;
 

@@ -5,7 +5,7 @@
 // shadow, so that no quadrature segment straddles a discontinuity. Positions are relative to
 // the Earth's centre, in metres; radiance is per unit sun irradiance.
 #include "atmosphere/AtmosphereParameters.h"
-#include "atmosphere/ScatteringParameterization.h"
+#include "atmosphere/yusov/YusovParameterization.h"
 
 #include <glm/glm.hpp>
 
@@ -36,7 +36,7 @@ public:
     bool hitsGround(glm::dvec3 start, glm::dvec3 dir) const;
     bool inEarthShadow(glm::dvec3 position, glm::dvec3 sunDir) const;
 
-    // Single scattering, document 000's L_in^(1): the integral along the view ray of
+    // Single scattering, Yusov 2013's L_in^(1): the integral along the view ray of
     // T(C -> P) (beta_R rho_R P_R + beta_M rho_M P_M) T_sun(P) ds.
     glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir) const;
     glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround) const;
@@ -47,7 +47,7 @@ public:
     // tables use), each weighted by its cosine, 2 pi / (directions / 2) each.
     glm::dvec3 singleScatteringIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int directions) const;
 
-    // Orders 2..maxOrder of scattering (document 000's L^H, the ground black as in the tables),
+    // Orders 2..maxOrder of scattering (Yusov 2013's L^H, the ground black as in the tables),
     // by Monte Carlo path tracing: each path walks from the camera, a distance along its ray
     // chosen in proportion to the density of scatterers (sampleByDensity), a new direction
     // uniformly over the sphere, and at every vertex takes the sun's light through one more
@@ -59,7 +59,7 @@ public:
                                  unsigned seed) const;
     // The sky's irradiance on a horizontal surface at `position`, orders 1..maxOrder (the
     // ground black), by the same paths started in directions drawn by their cosine with the up
-    // vector: document 000's ambient light (eq. 3) and Bruneton's E.
+    // vector: Yusov 2013's ambient light (eq. 3) and Bruneton's E.
     Estimate skyIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int maxOrder, int paths, unsigned seed) const;
 
     // A distance along start + s dir, s in [0, length], drawn from two uniform numbers with a

@@ -1,5 +1,5 @@
 #pragma once
-// "Animate sun" (document 000's Additional panel): the sun turns at a steady rate about the
+// "Animate sun" (Yusov 2013's Additional panel): the sun turns at a steady rate about the
 // world's x axis, so that it rises over +z, crosses the zenith and sets towards -z, and the
 // twilight and the night come round. Each step is an exact rotation, so the path does not
 // depend on the frame rate.

@@ -13,7 +13,7 @@ struct Camera {
     glm::vec3 position{0.0f, 8000.0f, 0.0f};  // metres; y is the altitude above the ground plane
     float yawDegrees = 0.0f;                  // 0 looks along +z, 90 along +x
     float pitchDegrees = 0.0f;                // positive looks up
-    float verticalFovDegrees = 45.0f;         // as document 000's sample
+    float verticalFovDegrees = 45.0f;         // as Yusov 2013's sample
     float nearPlane = 1.0f;                   // metres
     float farPlane = 1.0e6f;                  // metres
 

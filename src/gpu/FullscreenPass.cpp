@@ -1,19 +1,10 @@
 #include "gpu/FullscreenPass.h"
 
-#include "gpu/Hresult.h"
+#include "gpu/CommonStates.h"
 
 namespace firmament {
 
-FullscreenPass::FullscreenPass(ID3D11Device* device) {
-    D3D11_RASTERIZER_DESC raster{};
-    raster.FillMode = D3D11_FILL_SOLID;
-    raster.CullMode = D3D11_CULL_NONE;
-    raster.DepthClipEnable = TRUE;
-    check(device->CreateRasterizerState(&raster, &rasterizer_), "CreateRasterizerState (full-screen pass)");
-    D3D11_DEPTH_STENCIL_DESC depth{};
-    depth.DepthEnable = FALSE;
-    check(device->CreateDepthStencilState(&depth, &noDepth_), "CreateDepthStencilState (full-screen pass)");
-}
+FullscreenPass::FullscreenPass(ID3D11Device* device) : rasterizer_(states::cullNone(device)), noDepth_(states::depthNone(device)) {}
 
 void FullscreenPass::bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height) const {
     const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};

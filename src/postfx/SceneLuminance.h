@@ -1,6 +1,6 @@
 #pragma once
 // The frame's log-average luminance (Reinhard et al. 2002, eq. 1) and the luminance the eye is
-// adapted to, both on the GPU (document 000, "Tone mapping"):
+// adapted to, both on the GPU (Yusov 2013, "Tone mapping"):
 //   1. measure(): ln(delta + L) of the HDR frame into a 64 x 64 R32F target, then its mip chain
 //      down to 1 x 1, each level the mean of the one above (shaders/postfx/log_luminance.hlsl,
 //      average_downsample.hlsl);

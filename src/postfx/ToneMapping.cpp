@@ -11,9 +11,13 @@ namespace firmament {
 
 ToneMapping::ToneMapping(ID3D11Device* device) : luminance_(device), pass_(device), readback_(device) {}
 
-void ToneMapping::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, GpuProfiler& profiler,
-                         const ToneMappingSettings& settings, ID3D11ShaderResourceView* hdrFrame, ID3D11RenderTargetView* output,
-                         int width, int height, double dtSeconds) {
+void ToneMapping::render(FrameContext& frame, const ToneMappingSettings& settings, ID3D11RenderTargetView* output) {
+    ID3D11DeviceContext* context = frame.context;
+    ShaderLibrary& shaders = frame.shaders;
+    GpuProfiler& profiler = frame.profiler;
+    ID3D11ShaderResourceView* hdrFrame = frame.targets.hdr().srv.Get();
+    const int width = frame.width(), height = frame.height();
+    const double dtSeconds = frame.dtSeconds;
     if (settings.autoExposure) {
         if (!measuring_) {  // switched on: start from this frame's measurement, forget the old reading
             luminance_.reset();

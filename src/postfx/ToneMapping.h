@@ -3,7 +3,7 @@
 // the display target. Owns its passes and their resources; docs/tonemapping.md explains it.
 #include "core/ExrImage.h"
 #include "gpu/DelayedScalarReadback.h"
-#include "gpu/GpuProfiler.h"
+#include "render/FrameContext.h"
 #include "postfx/ExposureReading.h"
 #include "postfx/SceneLuminance.h"
 #include "postfx/ToneMappingPass.h"
@@ -14,9 +14,8 @@ class ToneMapping {
 public:
     explicit ToneMapping(ID3D11Device* device);
 
-    // `dtSeconds`: the time since the last frame, for light adaptation.
-    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, GpuProfiler& profiler, const ToneMappingSettings& settings,
-                ID3D11ShaderResourceView* hdrFrame, ID3D11RenderTargetView* output, int width, int height, double dtSeconds);
+    // The frame's HDR target into `output`; light adaptation follows the frame's time step.
+    void render(FrameContext& frame, const ToneMappingSettings& settings, ID3D11RenderTargetView* output);
 
     // A few frames old; never waits for the GPU (the GUI).
     ExposureReading latestReading(ID3D11DeviceContext* context, const ToneMappingSettings& settings);

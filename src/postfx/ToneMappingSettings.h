@@ -16,7 +16,7 @@ inline constexpr std::array<std::string_view, 7> kToneMapOperatorNames{
     "Exp", "Reinhard", "Reinhard mod", "Uncharted 2", "Filmic ALU", "Logarithmic", "Adaptive log"};
 inline constexpr int kToneMapOperatorCount = static_cast<int>(kToneMapOperatorNames.size());
 
-// Which controls an operator reads (document 000, "Tone mapping controls").
+// Which controls an operator reads (Yusov 2013, "Tone mapping controls").
 constexpr bool usesWhitePoint(ToneMapOperator op) {
     return op == ToneMapOperator::ReinhardModified || op == ToneMapOperator::Uncharted2 ||
            op == ToneMapOperator::Logarithmic || op == ToneMapOperator::AdaptiveLogarithmic;

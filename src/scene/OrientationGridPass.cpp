@@ -1,6 +1,6 @@
 #include "scene/OrientationGridPass.h"
 
-#include "gpu/Hresult.h"
+#include "gpu/CommonStates.h"
 
 namespace firmament {
 
@@ -10,28 +10,18 @@ const ShaderKey kPixelShader{"scene/orientation_grid.hlsl", "ps_main", "ps_5_0",
 const ShaderKey kGroundPixelShader{"scene/orientation_grid.hlsl", "ps_main", "ps_5_0", {"GROUND_ONLY=1"}};
 }  // namespace
 
-OrientationGridPass::OrientationGridPass(ID3D11Device* device) : fullscreen_(device) {
-    D3D11_DEPTH_STENCIL_DESC desc{};
-    desc.DepthEnable = TRUE;
-    desc.DepthWriteMask = D3D11_DEPTH_WRITE_MASK_ALL;
-    desc.DepthFunc = D3D11_COMPARISON_GREATER_EQUAL;  // reversed Z
-    check(device->CreateDepthStencilState(&desc, &writeDepth_), "CreateDepthStencilState (orientation grid)");
-}
+OrientationGridPass::OrientationGridPass(ID3D11Device* device) : fullscreen_(device), writeDepth_(states::depthReversed(device)) {}
 
-void OrientationGridPass::renderGround(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11Buffer* frameConstants,
-                                       ID3D11RenderTargetView* hdrFrame, ID3D11DepthStencilView* depth, int width, int height) {
-    fullscreen_.bindTarget(context, hdrFrame, width, height);
-    context->OMSetRenderTargets(1, &hdrFrame, depth);
-    context->OMSetDepthStencilState(writeDepth_.Get(), 0);
-    context->PSSetConstantBuffers(0, 1, &frameConstants);
-    fullscreen_.draw(context, shaders, kVertexShader, kGroundPixelShader);
-}
-
-void OrientationGridPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11Buffer* frameConstants,
-                                 ID3D11RenderTargetView* hdrFrame, int width, int height) {
-    fullscreen_.bindTarget(context, hdrFrame, width, height);
-    context->PSSetConstantBuffers(0, 1, &frameConstants);
-    fullscreen_.draw(context, shaders, kVertexShader, kPixelShader);
+void OrientationGridPass::render(FrameContext& frame, bool groundOnly) {
+    ID3D11DeviceContext* context = frame.context;
+    ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
+    fullscreen_.bindTarget(context, hdr, frame.width(), frame.height());
+    if (groundOnly) {
+        context->OMSetRenderTargets(1, &hdr, frame.targets.depth().dsv.Get());
+        context->OMSetDepthStencilState(writeDepth_.Get(), 0);
+    }
+    context->PSSetConstantBuffers(0, 1, &frame.frameConstants);
+    fullscreen_.draw(context, frame.shaders, kVertexShader, groundOnly ? kGroundPixelShader : kPixelShader);
 }
 
 }  // namespace firmament

@@ -1,7 +1,7 @@
 #pragma once
 // Cascaded shadow maps' geometry on the CPU, in double precision (docs/shadows.md):
 //  - the split distances, a blend of logarithmic and uniform partitions of the view depth
-//    (Zhang et al. 2006, "parallel-split shadow maps"; document 000's "Partitioning factor");
+//    (Zhang et al. 2006, "parallel-split shadow maps"; Yusov 2013's "Partitioning factor");
 //  - each cascade's orthographic light projection, stabilized (Valient 2008): a bounding sphere
 //    of the frustum slice, whose radius depends only on the frustum's shape, so that the
 //    projection's size never changes when the camera turns or moves, and a centre snapped to

@@ -1,5 +1,6 @@
 #include "shadows/CascadedShadowMaps.h"
 
+#include "gpu/CommonStates.h"
 #include "gpu/Hresult.h"
 
 #include <algorithm>
@@ -13,25 +14,13 @@ constexpr float kNormalOffsetTexels = 1.5f;  // receivers pushed along their nor
 constexpr float kSlopeScaledBias = 2.0f;      // casters pushed away by their depth slope
 }  // namespace
 
-CascadedShadowMaps::CascadedShadowMaps(ID3D11Device* device) : device_(device), constantBuffer_(device), casterBuffer_(device) {
-    D3D11_SAMPLER_DESC sampler{};
-    sampler.Filter = D3D11_FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT;
-    sampler.AddressU = sampler.AddressV = sampler.AddressW = D3D11_TEXTURE_ADDRESS_CLAMP;
-    sampler.ComparisonFunc = D3D11_COMPARISON_LESS_EQUAL;
-    sampler.MaxLOD = D3D11_FLOAT32_MAX;
-    check(device->CreateSamplerState(&sampler, &comparison_), "CreateSamplerState (shadow comparison)");
-    D3D11_RASTERIZER_DESC raster{};
-    raster.FillMode = D3D11_FILL_SOLID;
-    raster.CullMode = D3D11_CULL_NONE;
-    raster.SlopeScaledDepthBias = kSlopeScaledBias;
-    raster.DepthClipEnable = FALSE;  // casters nearer the sun than the range clamp to depth 0 and still cast
-    check(device->CreateRasterizerState(&raster, &casterRaster_), "CreateRasterizerState (shadow casters)");
-    D3D11_DEPTH_STENCIL_DESC depth{};
-    depth.DepthEnable = TRUE;
-    depth.DepthWriteMask = D3D11_DEPTH_WRITE_MASK_ALL;
-    depth.DepthFunc = D3D11_COMPARISON_LESS;
-    check(device->CreateDepthStencilState(&depth, &casterDepth_), "CreateDepthStencilState (shadow casters)");
-}
+CascadedShadowMaps::CascadedShadowMaps(ID3D11Device* device)
+    : device_(device),
+      comparison_(states::shadowComparison(device)),
+      casterRaster_(states::shadowCaster(device, kSlopeScaledBias)),  // casters nearer the sun than the range clamp to depth 0 and still cast
+      casterDepth_(states::depthLess(device)),
+      constantBuffer_(device),
+      casterBuffer_(device) {}
 
 // The atlas: up to four cascades to a row. One texture, not an array: Wine's Direct3D compares
 // against slice 0 whatever the array index (docs/shadows.md), and an atlas is as fast.

@@ -1,5 +1,5 @@
 #pragma once
-// Settings of the cascaded shadow maps (section "shadows"): document 000's Basic panel
+// Settings of the cascaded shadow maps (section "shadows"): Yusov 2013's Basic panel
 // (Shadow map resolution) and Additional panel (Num cascades, Show cascades, Smooth shadows,
 // Best cascade search, Partitioning factor), with its defaults.
 #include "core/Settings.h"

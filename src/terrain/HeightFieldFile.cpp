@@ -1,6 +1,6 @@
 #include "terrain/HeightFieldFile.h"
 
-#include "atmosphere/TableFileSupport.h"
+#include "tables/TableFiles.h"
 #include "core/Error.h"
 #include "core/Log.h"
 

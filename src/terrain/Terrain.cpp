@@ -1,9 +1,10 @@
 #include "terrain/Terrain.h"
 
-#include "atmosphere/PrecomputationSupport.h"
+#include "gpu/CommonStates.h"
 #include "gpu/Hresult.h"
 #include "terrain/TerrainSurface.h"
 
+#include <algorithm>
 #include <string>
 
 namespace firmament {
@@ -42,7 +43,14 @@ Texture2D createMipmappedTexture(ID3D11Device* device, DXGI_FORMAT format, int s
 }  // namespace
 
 Terrain::Terrain(ID3D11Device* device, HeightField field, double earthRadius)
-    : field_(std::move(field)), earthRadius_(earthRadius), mesh_(device), constants_(device), linearClamp_(createLinearClampSampler(device)) {
+    : field_(std::move(field)),
+      earthRadius_(earthRadius),
+      mesh_(device),
+      constants_(device),
+      linearClamp_(states::linearClamp(device)),
+      linearWrap_(states::linearWrap(device)),
+      solid_(states::cullBackScissored(device)),
+      depthTest_(states::depthReversed(device)) {
     std::vector<std::vector<float>> heightMips;
     std::vector<std::vector<glm::vec2>> slopeMips;
     for (int m = 0; m < field_.mipCount(); ++m) {
@@ -51,24 +59,6 @@ Terrain::Terrain(ID3D11Device* device, HeightField field, double earthRadius)
     }
     heights_ = createMipmappedTexture(device, DXGI_FORMAT_R32_FLOAT, field_.size(), heightMips);
     slopes_ = createMipmappedTexture(device, DXGI_FORMAT_R32G32_FLOAT, field_.size(), slopeMips);
-
-    D3D11_SAMPLER_DESC sampler{};
-    sampler.Filter = D3D11_FILTER_MIN_MAG_MIP_LINEAR;
-    sampler.AddressU = sampler.AddressV = sampler.AddressW = D3D11_TEXTURE_ADDRESS_WRAP;
-    sampler.MaxLOD = D3D11_FLOAT32_MAX;
-    sampler.ComparisonFunc = D3D11_COMPARISON_NEVER;
-    check(device->CreateSamplerState(&sampler, &linearWrap_), "CreateSamplerState (terrain)");
-
-    D3D11_RASTERIZER_DESC raster{};
-    raster.FillMode = D3D11_FILL_SOLID;
-    raster.CullMode = D3D11_CULL_BACK;
-    raster.DepthClipEnable = TRUE;
-    check(device->CreateRasterizerState(&raster, &solid_), "CreateRasterizerState (terrain)");
-    D3D11_DEPTH_STENCIL_DESC depth{};
-    depth.DepthEnable = TRUE;
-    depth.DepthWriteMask = D3D11_DEPTH_WRITE_MASK_ALL;
-    depth.DepthFunc = D3D11_COMPARISON_GREATER_EQUAL;  // reversed Z (src/core/Camera.h)
-    check(device->CreateDepthStencilState(&depth, &depthTest_), "CreateDepthStencilState (terrain)");
 }
 
 double Terrain::groundHeight(double x, double z) const { return surfaceHeight(field_, x, z, kFinestSpacing); }
@@ -114,29 +104,31 @@ void Terrain::drawLevels(ID3D11DeviceContext* context, unsigned view) {
     }
 }
 
-void Terrain::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11Buffer* frameConstants, const GroundLighting& lighting,
-                     const ShadowInputs& shadows, const TerrainSettings& settings, ID3D11RenderTargetView* hdrFrame,
-                     ID3D11DepthStencilView* depth, int width, int height) {
+void Terrain::render(FrameContext& frame, const GroundLighting& lighting, const ShadowInputs& shadows, const TerrainSettings& settings) {
+    ID3D11DeviceContext* context = frame.context;
+    const int width = frame.width(), height = frame.height();
     D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
     context->RSSetViewports(1, &viewport);
+    const D3D11_RECT columns{std::clamp(lighting.firstColumn, 0, width), 0, std::clamp(lighting.endColumn, 0, width), height};
+    context->RSSetScissorRects(1, &columns);
     context->RSSetState(solid_.Get());
-    context->OMSetRenderTargets(1, &hdrFrame, depth);
+    ID3D11RenderTargetView* hdrFrame = frame.targets.hdr().rtv.Get();
+    context->OMSetRenderTargets(1, &hdrFrame, frame.targets.depth().dsv.Get());
     context->OMSetDepthStencilState(depthTest_.Get(), 0);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffff);
-    ID3D11Buffer* buffers[5] = {frameConstants, lighting.atmosphere, lighting.bruneton, constants_.get(), shadows.constants};
+    ID3D11Buffer* buffers[5] = {frame.frameConstants, lighting.atmosphere, lighting.bruneton, constants_.get(), shadows.constants};
     context->VSSetConstantBuffers(0, 5, buffers);
     context->PSSetConstantBuffers(0, 5, buffers);
     bindFieldTextures(context, true);
-    ID3D11ShaderResourceView* tables[5] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map, lighting.brunetonTransmittance,
-                                           lighting.brunetonIrradiance};
-    context->PSSetShaderResources(2, 5, tables);
+    ID3D11ShaderResourceView* tables[3] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map};
+    context->PSSetShaderResources(2, 3, tables);
     ID3D11SamplerState* samplers[3] = {linearClamp_.Get(), linearWrap_.Get(), shadows.comparison};
     context->PSSetSamplers(0, 3, samplers);
-    context->VSSetShader(shaders.vertexShader(kVertexShader), nullptr, 0);
-    context->PSSetShader(shaders.pixelShader(pixelShader(lighting.model)), nullptr, 0);
+    context->VSSetShader(frame.shaders.vertexShader(kVertexShader), nullptr, 0);
+    context->PSSetShader(frame.shaders.pixelShader(pixelShader(lighting.model)), nullptr, 0);
     drawLevels(context, static_cast<unsigned>(settings.view));
-    ID3D11ShaderResourceView* none[7] = {};
-    context->PSSetShaderResources(0, 7, none);
+    ID3D11ShaderResourceView* none[5] = {};
+    context->PSSetShaderResources(0, 5, none);
     context->VSSetShaderResources(0, 2, none);
     context->RSSetState(nullptr);
     context->OMSetDepthStencilState(nullptr, 0);

@@ -13,6 +13,7 @@
 #include "terrain/ClipmapMesh.h"
 #include "terrain/HeightField.h"
 #include "terrain/TerrainSettings.h"
+#include "render/FrameContext.h"
 
 #include <glm/glm.hpp>
 
@@ -36,10 +37,9 @@ public:
     void place(glm::dvec3 camera);
     const std::vector<ClipmapLevel>& levels() const { return levels_; }
 
-    // The lit surface into `hdrFrame`, testing and writing `depth`. `frameConstants` at b0.
-    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11Buffer* frameConstants, const GroundLighting& lighting,
-                const ShadowInputs& shadows, const TerrainSettings& settings, ID3D11RenderTargetView* hdrFrame,
-                ID3D11DepthStencilView* depth, int width, int height);
+    // The lit surface into the frame's HDR target, testing and writing its depth, over the
+    // columns `lighting` covers.
+    void render(FrameContext& frame, const GroundLighting& lighting, const ShadowInputs& shadows, const TerrainSettings& settings);
     // Depth alone into the bound depth target, through `caster` (ShadowCasterConstants at b5).
     void renderDepth(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11Buffer* caster);
 
@@ -54,7 +54,7 @@ private:
     ClipmapMesh mesh_;
     ConstantBuffer<gpu::TerrainConstants> constants_;
     ComPtr<ID3D11SamplerState> linearClamp_, linearWrap_;
-    ComPtr<ID3D11RasterizerState> solid_;
+    ComPtr<ID3D11RasterizerState> solid_;  // back faces culled, scissored to the lighting's columns
     ComPtr<ID3D11DepthStencilState> depthTest_;
     std::vector<ClipmapLevel> levels_;
 };

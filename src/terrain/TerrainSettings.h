@@ -14,7 +14,7 @@ inline constexpr std::array<std::string_view, 4> kTerrainViewNames{"Shaded", "Al
 struct TerrainSettings {
     bool enabled = true;
     TerrainView view = TerrainView::Shaded;
-    float cameraClearance = 100.0f;  // metres the camera keeps above the ground (document 000's sample: 100)
+    float cameraClearance = 100.0f;  // metres the camera keeps above the ground (Yusov 2013's sample: 100)
 
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Terrain");

@@ -2,7 +2,7 @@
 // The GUI's content: the panel chosen in the drop-down at the top (Basic, Additional, Tone
 // mapping, Performance), the shader-error window and the F1 help window. What the GUI asks
 // the program to do (full screen, reload, save, load) comes back as GuiRequests.
-#include "app/State.h"
+#include "settings/State.h"
 #include "gpu/GpuProfiler.h"
 #include "postfx/ExposureReading.h"
 #include "ui/FrameTimeHistory.h"

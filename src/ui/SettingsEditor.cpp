@@ -1,9 +1,12 @@
 #include "ui/SettingsEditor.h"
 
+#include "core/SettingsJson.h"
+
 #include <imgui.h>
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace firmament {
 
@@ -34,12 +37,21 @@ public:
         if (wanted(k)) editor_.choiceIndex(k, i, n, l);
     }
 
+    // The first listed key that no field had, or an empty view.
+    std::string_view missingKey() const {
+        for (std::string_view key : only_)
+            if (std::find(seen_.begin(), seen_.end(), key) == seen_.end()) return key;
+        return {};
+    }
+
 private:
-    bool wanted(std::string_view key) const {
+    bool wanted(std::string_view key) {
+        seen_.push_back(key);
         return only_.size() == 0 || std::find(only_.begin(), only_.end(), key) != only_.end();
     }
     SettingsEditor& editor_;
     std::initializer_list<std::string_view> only_;
+    std::vector<std::string_view> seen_;
 };
 
 }  // namespace
@@ -83,6 +95,8 @@ bool editSection(const SettingsSection& section, std::initializer_list<std::stri
     ImGui::PushID(text(section.name).c_str());
     section.visit(filtered);
     ImGui::PopID();
+    if (const std::string_view key = filtered.missingKey(); !key.empty())
+        throw SettingsError("GUI: the settings section '" + text(section.name) + "' has no key '" + text(key) + "'");
     return editor.changed();
 }
 

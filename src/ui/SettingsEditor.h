@@ -21,7 +21,8 @@ private:
     bool changed_ = false;
 };
 
-// Draws every field of `section`, or only those whose keys are listed in `only`.
+// Draws every field of `section`, or only those whose keys are listed in `only`; true when one
+// changed. A listed key the section does not have throws SettingsError naming it.
 bool editSection(const SettingsSection& section, std::initializer_list<std::string_view> only = {});
 
 }  // namespace firmament

@@ -138,7 +138,7 @@ TEST(TerrainCapture, NoNanOrInfAtAnySunAngle) {
         }
 }
 
-// The terrain's pixels end to end, against document 000's shading computed on the CPU from the
+// The terrain's pixels end to end, against Yusov 2013's shading computed on the CPU from the
 // same frame's albedo and normal views. Scattering and shadows off, so the sun arrives
 // unattenuated (T = 1) and the sky gives its constant 0.1 (ground_lighting.hlsli, model 0):
 //   L = albedo / pi * (max(N . L, 0) + 0.1 * saturate(4 cos(sun zenith) + 0.25) * (1 + N . up) / 2).

@@ -6,8 +6,9 @@
 #include "TableFilesCheck.h"
 #include "WarpDevice.h"
 #include "atmosphere/ReferenceAtmosphere.h"
-#include "atmosphere/ScatteringPrecomputation.h"
-#include "atmosphere/ScatteringTableFiles.h"
+#include "atmosphere/yusov/YusovPrecomputation.h"
+#include "atmosphere/yusov/YusovTableFiles.h"
+#include "gpu/CommonStates.h"
 #include "gpu/ConstantBuffer.h"
 
 #include <Imath/half.h>
@@ -35,21 +36,21 @@ class AtmosphereTables : public WarpDevice {
 protected:
     // Single scattering only unless `orders` says otherwise: most tests need no more, and the
     // higher orders take most of the time on the WARP device.
-    std::unique_ptr<ScatteringPrecomputation> precompute(LutResolution resolution, int orders = 1) {
+    std::unique_ptr<YusovPrecomputation> precompute(LutResolution resolution, int orders = 1) {
         AtmosphereParameters p;
         p.lut = LutDimensions::of(resolution);
         p.scatteringOrders = orders;
-        auto tables = std::make_unique<ScatteringPrecomputation>(device(), p);
+        auto tables = std::make_unique<YusovPrecomputation>(device(), p);
         tables->runAll(context(), *productShaderLibrary);
         return tables;
     }
 
     // Runs lookup_probe.hlsl's `entry` over the queries.
-    std::vector<glm::vec4> probe(const ScatteringPrecomputation& tables, const std::vector<Query>& queries, const char* entry,
+    std::vector<glm::vec4> probe(const YusovPrecomputation& tables, const std::vector<Query>& queries, const char* entry,
                                  const Texture3D* table = nullptr) {
         ConstantBuffer<gpu::AtmosphereConstants> constants(device());
         constants.update(context(), tables.parameters().constants());
-        const auto sampler = createLinearClampSampler(device());
+        const auto sampler = states::linearClamp(device());
         return runProbe({"atmosphere/lookup_probe.hlsl", entry, "cs_5_0", {}}, queries, {constants.get()},
                         {tables.tables().netDensity.srv.Get(), (table ? *table : tables.tables().singleScattering).srv.Get()}, sampler.Get());
     }
@@ -111,10 +112,10 @@ TEST_F(AtmosphereTables, SingleScatteringTexelsMatchTheCpu) {
     std::printf("single scattering texels: largest relative error %.3f over 250 texels\n", worst);
 }
 
-// Look-ups at random points of a full-resolution table (32x128x64x16, document 000's size):
+// Look-ups at random points of a full-resolution table (32x128x64x16, Yusov 2013's size):
 // the integration and the interpolation together. Points with the view within 2 degrees of
 // the horizon are left out: there the radiance changes faster than 128 texels of view zenith
-// resolve, the non-linearity document 000 warns about. Sun elevations from -10 to 90 degrees.
+// resolve, the non-linearity Yusov 2013 warns about. Sun elevations from -10 to 90 degrees.
 // Errors are relative to the brightest channel, or to kRadianceFloor (about 2% of the noon
 // zenith sky) where that is darker. Bounds: median 2.5%, 90th percentile 12%, every point 30%.
 // The largest errors are where the parameterization is coarsest: views and suns near the
@@ -181,8 +182,8 @@ TEST_F(AtmosphereTables, TableFilesRoundTripAndRefuseBadFiles) {
     const auto computed = precompute(LutResolution::Small);
     AtmosphereParameters bigger = computed->parameters();
     bigger.lut = LutDimensions::of(LutResolution::Medium);
-    checkTableFiles<ScatteringPrecomputation>(device(), context(), *computed, scatteringTableKey(computed->parameters(), *productShaderLibrary),
-                                              bigger, "single-scattering.exr", [&](const ScatteringPrecomputation& p) {
+    checkTableFiles<YusovPrecomputation>(device(), context(), *computed, yusovTableKey(computed->parameters(), *productShaderLibrary),
+                                              bigger, "single-scattering.exr", [&](const YusovPrecomputation& p) {
                                                   const auto& t = p.tables();
                                                   return std::vector{readTexture3D(device(), context(), t.singleScattering.texture.Get()).bytes,
                                                                      readTexture2D(device(), context(), t.netDensity.texture.Get()).bytes};

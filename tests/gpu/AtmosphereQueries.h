@@ -3,7 +3,7 @@
 // centre, a view and a sun direction, laid out as the probe shaders' Query structure.
 #include "atmosphere/AtmosphereParameters.h"
 #include "atmosphere/ReferenceAtmosphere.h"
-#include "atmosphere/ScatteringParameterization.h"
+#include "atmosphere/yusov/YusovParameterization.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>

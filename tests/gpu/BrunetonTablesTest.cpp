@@ -6,10 +6,12 @@
 #include "TableFilesCheck.h"
 #include "WarpDevice.h"
 #include "atmosphere/ReferenceAtmosphere.h"
-#include "atmosphere/ScatteringPrecomputation.h"
+#include "atmosphere/yusov/YusovPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonTableFiles.h"
+#include "gpu/CommonStates.h"
 #include "gpu/ConstantBuffer.h"
+#include "tables/SphereDirections.h"
 
 #include <Imath/half.h>
 
@@ -51,11 +53,11 @@ protected:
         return tables;
     }
 
-    std::unique_ptr<ScatteringPrecomputation> yusov(LutResolution resolution, int orders) {
+    std::unique_ptr<YusovPrecomputation> yusov(LutResolution resolution, int orders) {
         AtmosphereParameters p;
         p.lut = LutDimensions::of(resolution);
         p.scatteringOrders = orders;
-        auto tables = std::make_unique<ScatteringPrecomputation>(device(), p);
+        auto tables = std::make_unique<YusovPrecomputation>(device(), p);
         tables->runAll(context(), *productShaderLibrary);
         return tables;
     }
@@ -66,7 +68,7 @@ protected:
         atmosphere.update(context(), tables.parameters().physics.constants());
         ConstantBuffer<gpu::BrunetonConstants> constants(device());
         constants.update(context(), tables.parameters().constants());
-        const auto sampler = createLinearClampSampler(device());
+        const auto sampler = states::linearClamp(device());
         const firmament::BrunetonTables& t = tables.tables();
         return runProbe({"atmosphere/bruneton_probe.hlsl", entry, "cs_5_0", {}}, queries, {atmosphere.get(), constants.get()},
                         {t.transmittance.srv.Get(), t.irradiance.srv.Get(), t.inscatter.srv.Get()}, sampler.Get());
@@ -74,7 +76,7 @@ protected:
 
     // Bruneton's in-scatter look-ups against one of Yusov's 4D tables at 240 random points away
     // from the horizon band: the errors relative to the brighter channel of Yusov's.
-    Percentiles agreement(const BrunetonPrecomputation& b, const ScatteringPrecomputation& y, const Texture3D& yusovTable, unsigned seed) {
+    Percentiles agreement(const BrunetonPrecomputation& b, const YusovPrecomputation& y, const Texture3D& yusovTable, unsigned seed) {
         const auto [queries, coordinates] = randomSkyQueries(b.parameters().physics, 240, seed, 2.0);
         const auto fromBruneton = probe(b, queries, "inscatter");
         const auto fromYusov = probeYusov(y, yusovTable, queries);
@@ -85,10 +87,10 @@ protected:
     }
 
     // lookup_probe.hlsl's scattering look-up into one of Yusov's 4D tables.
-    std::vector<glm::vec4> probeYusov(const ScatteringPrecomputation& tables, const Texture3D& table, const std::vector<Query>& queries) {
+    std::vector<glm::vec4> probeYusov(const YusovPrecomputation& tables, const Texture3D& table, const std::vector<Query>& queries) {
         ConstantBuffer<gpu::AtmosphereConstants> atmosphere(device());
         atmosphere.update(context(), tables.parameters().constants());
-        const auto sampler = createLinearClampSampler(device());
+        const auto sampler = states::linearClamp(device());
         return runProbe({"atmosphere/lookup_probe.hlsl", "scattering", "cs_5_0", {}}, queries, {atmosphere.get()},
                         {tables.tables().netDensity.srv.Get(), table.srv.Get()}, sampler.Get());
     }

@@ -1,13 +1,13 @@
 // The terrain's shader functions on the WARP device against their CPU twins and the physics:
 // the surface (height field, detail noise, the Earth's curvature) against TerrainSurface.cpp, and
-// the shading (document 000's terrain lighting) against the reference atmosphere's transmittance
+// the shading (Yusov 2013's terrain lighting) against the reference atmosphere's transmittance
 // and Monte Carlo sky irradiance.
 #include "gpu/WarpDevice.h"
 
 #include "atmosphere/AtmosphereParameters.h"
-#include "atmosphere/PrecomputationSupport.h"
+#include "gpu/CommonStates.h"
 #include "atmosphere/ReferenceAtmosphere.h"
-#include "atmosphere/ScatteringPrecomputation.h"
+#include "atmosphere/yusov/YusovPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"
 #include "gpu/ConstantBuffer.h"
 #include "terrain/Terrain.h"
@@ -57,7 +57,7 @@ TEST_F(TerrainFunctions, SurfaceMatchesTheCpuTwin) {
     }
     ConstantBuffer<gpu::TerrainConstants> constants(device());
     constants.update(context(), fieldConstants(field, R));
-    const auto sampler = createLinearClampSampler(device());
+    const auto sampler = states::linearClamp(device());
     const auto results = runProbe({"terrain/terrain_probe.hlsl", "surface", "cs_5_0", {}}, queries, {nullptr, nullptr, constants.get()},
                                   {terrain.heightFieldView(), nullptr, nullptr}, sampler.Get());
     double largest = 0.0;
@@ -142,13 +142,13 @@ TEST_F(TerrainFunctions, YusovShadingMatchesTheReference) {
     AtmosphereParameters p;
     p.lut = LutDimensions::of(LutResolution::Medium);
     p.scatteringOrders = 4;
-    ScatteringPrecomputation tables(device(), p);
+    YusovPrecomputation tables(device(), p);
     tables.runAll(context(), *productShaderLibrary);
     ConstantBuffer<gpu::AtmosphereConstants> atmosphere(device());
     atmosphere.update(context(), p.constants());
-    const auto sampler = createLinearClampSampler(device());
+    const auto sampler = states::linearClamp(device());
     // Yusov's ambient light is the sky's irradiance at the ground whatever the altitude
-    // (document 000 indexes it by the sun's angle alone): points at the ground.
+    // (Yusov 2013 indexes it by the sun's angle alone): points at the ground.
     const auto queries = shadingQueries(240, 0.0, 11);
     const ShaderKey key{"terrain/terrain_probe.hlsl", "shading", "cs_5_0", {"GROUND_LIGHTING=1"}};
     const auto run = [&](const std::vector<ProbeQuery>& q) {
@@ -170,7 +170,7 @@ TEST_F(TerrainFunctions, BrunetonShadingMatchesTheReference) {
     atmosphere.update(context(), p.physics.constants());
     ConstantBuffer<gpu::BrunetonConstants> bruneton(device());
     bruneton.update(context(), p.constants());
-    const auto sampler = createLinearClampSampler(device());
+    const auto sampler = states::linearClamp(device());
     const auto queries = shadingQueries(240, 4000.0, 12);  // Bruneton's irradiance follows the altitude
     const ShaderKey key{"terrain/terrain_probe.hlsl", "shading", "cs_5_0", {"GROUND_LIGHTING=2"}};
     const auto run = [&](const std::vector<ProbeQuery>& q) {

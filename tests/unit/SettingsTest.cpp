@@ -1,6 +1,6 @@
 // Settings and state: JSON round trips, --set assignments, and every kind of bad input
 // answered with a message that names the key.
-#include "app/State.h"
+#include "settings/State.h"
 #include "core/SettingsJson.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #ifndef FIRMAMENT_BRUNETON_LOOKUP_HLSLI
 #define FIRMAMENT_BRUNETON_LOOKUP_HLSLI
-// Look-ups into Bruneton and Neyret 2008's tables (document 002): transmittance to the top of
+// Look-ups into Bruneton and Neyret 2008's tables: transmittance to the top of
 // the atmosphere, ground irradiance, and the 4D in-scatter table packed into 3D.
 #include "atmosphere/bruneton/parameterization.hlsli"
 
@@ -46,7 +46,7 @@ float4 sampleInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<flo
     return lerp(lut.SampleLevel(linearClamp, uvw, 0), lut.SampleLevel(linearClamp, uvw + float3(1.0 / n.w, 0.0, 0.0), 0), weight);
 }
 
-// Single Mie scattering's colour from its red channel (document 002, "getMie"): the table keeps
+// Single Mie scattering's colour from its red channel (Bruneton and Neyret 2008, "getMie"): the table keeps
 // Rayleigh's RGB and Mie's red only; Mie's other channels follow from the ratio of the two
 // species, which single scattering makes close to beta_M / beta_R per channel.
 float3 mieFromRed(AtmosphereConstants a, float4 rayleighMie) {

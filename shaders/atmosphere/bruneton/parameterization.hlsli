@@ -1,6 +1,6 @@
 #ifndef FIRMAMENT_BRUNETON_PARAMETERIZATION_HLSLI
 #define FIRMAMENT_BRUNETON_PARAMETERIZATION_HLSLI
-// Bruneton and Neyret 2008's parameterization of their tables (document 002) and its inverse.
+// Bruneton and Neyret 2008's parameterization of their tables and its inverse.
 // The CPU twin, with the mapping explained: src/atmosphere/bruneton/BrunetonParameterization.h.
 // Coordinates: r the radius from the Earth's centre; mu, mu_s, nu the cosines of the view
 // zenith, sun zenith and sun-view angles. Rg = atmosphere.earth.x, Rt = atmosphere.earth.z.

@@ -1,4 +1,4 @@
-// Bruneton and Neyret 2008, the 4D in-scatter tables (document 002, "Single Inscatter Table",
+// Bruneton and Neyret 2008, the 4D in-scatter tables (Bruneton and Neyret 2008, "Single Inscatter Table",
 // "Multiple Inscatter Table"), one thread per texel of the packed 3D texture, in slabs of
 // radius layers (PrecomputeSliceConstants), per unit sun irradiance:
 //   singleScattering: delta S_R = beta_R integral of rho_R(y) T(x -> y) T_sun(y) dt, delta S_M likewise

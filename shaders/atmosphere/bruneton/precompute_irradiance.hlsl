@@ -1,4 +1,4 @@
-// Bruneton and Neyret 2008, the ground irradiance tables (document 002, "Irradiance",
+// Bruneton and Neyret 2008, the ground irradiance tables (Bruneton and Neyret 2008, "Irradiance",
 // "Multiple Irradiance Table"), per unit sun irradiance on a horizontal surface at radius r
 // with the sun at zenith cosine mu_s:
 //   direct:     delta E = T(r, mu_s) max(mu_s, 0), the sun's light alone;

@@ -1,4 +1,4 @@
-// Bruneton and Neyret 2008, pre-computation step 1 (document 002, "Transmittance Table"):
+// Bruneton and Neyret 2008, pre-computation step 1 (Bruneton and Neyret 2008, "Transmittance Table"):
 // T(r, mu) = exp(-sum of beta_e integral of rho(h) ds) from radius r to the top of the atmosphere
 // along zenith cosine mu, by the trapezoidal rule. Rays that meet the ground take the grazing
 // ray's value (see lookup.hlsli), so that filtering never blurs the horizon.

@@ -1,4 +1,4 @@
-// Bruneton and Neyret 2008 at render time (document 002, "Rendering"): the frame is the sum
+// Bruneton and Neyret 2008 at render time (Bruneton and Neyret 2008, "Rendering"): the frame is the sum
 // of three parts per pixel, each per unit sun irradiance times the sun's irradiance:
 //  - in-scattered light between the camera x and the ray's end x0:
 //      S(x, v) - T(x -> x0) S(x0, v), Rayleigh's part times P_R(nu), Mie's (rebuilt from its
@@ -8,8 +8,10 @@
 //      albedo / pi (T_sun(x0) max(mu_s, 0) + E(x0, mu_s)), seen through T(x -> x0);
 //    other geometry keeps the radiance the scene gave it, seen through the same T;
 //  - the sun's disc where the ray leaves the atmosphere, through T(x, v).
-// BrunetonPassConstants.view draws the whole frame, only its right part (the split view), or
-// |this model - the frame already drawn| (the difference view).
+// Two passes, as Yusov's model's: ps_sky where nothing was drawn (the sky, the sun and the
+// model's own ground), ps_aerial_perspective over geometry. BrunetonPassConstants.view draws
+// the whole frame, only its right part (the split view), or |this model - the frame already
+// drawn| (the difference view).
 #include "common/fullscreen_triangle.hlsli"
 #include "atmosphere/bruneton/lookup.hlsli"
 
@@ -26,7 +28,7 @@ cbuffer PassBuffer : register(b3) {
     BrunetonPassConstants composition;
 };
 
-Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before the atmosphere
+Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before the atmosphere (ps_aerial_perspective)
 Texture2D<float> sceneDepth : register(t1);
 Texture2D<float4> transmittanceTable : register(t2);
 Texture2D<float4> irradianceTable : register(t3);
@@ -48,9 +50,8 @@ float3 inscatteredRadiance(float4 rayleighMie, float nu) {
 }
 
 // The radiance this model gives the pixel, per the three parts above.
-float3 modelRadiance(int2 pixel, float2 uv) {
-    float depth = sceneDepth.Load(int3(pixel, 0));
-    float3 scene = sceneRadiance.Load(int3(pixel, 0)).rgb;
+float3 modelRadiance(int2 pixel, float2 uv, float depth) {
+    float3 scene = depth > 0.0 ? sceneRadiance.Load(int3(pixel, 0)).rgb : 0.0;
     float2 ndc = float2(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0);
     float4 farPoint = mul(frame.clipToDirection, float4(ndc, 1.0, 1.0));
     float3 v = normalize(farPoint.xyz / farPoint.w);
@@ -131,10 +132,24 @@ float3 modelRadiance(int2 pixel, float2 uv) {
     return radiance + inscatteredRadiance(inscatter, nu) * sunIrradiance;
 }
 
-float4 ps_main(FullscreenVertex input) : SV_Target {
-    int2 pixel = int2(input.position.xy);
-    if (composition.view.x == kSplitRight && (uint)pixel.x < composition.view.y) discard;
-    float3 radiance = modelRadiance(pixel, input.uv);
+float4 composed(int2 pixel, float2 uv, float depth) {
+    float3 radiance = modelRadiance(pixel, uv, depth);
     if (composition.view.x == kDifference) radiance = abs(radiance - otherModel.Load(int3(pixel, 0)).rgb);
     return float4(radiance, 1.0);
+}
+
+float4 ps_sky(FullscreenVertex input) : SV_Target {
+    int2 pixel = int2(input.position.xy);
+    if (composition.view.x == kSplitRight && (uint)pixel.x < composition.view.y) discard;
+    float depth = sceneDepth.Load(int3(pixel, 0));
+    if (depth > 0.0) discard;  // reversed Z: geometry, the other pass's
+    return composed(pixel, input.uv, depth);
+}
+
+float4 ps_aerial_perspective(FullscreenVertex input) : SV_Target {
+    int2 pixel = int2(input.position.xy);
+    if (composition.view.x == kSplitRight && (uint)pixel.x < composition.view.y) discard;
+    float depth = sceneDepth.Load(int3(pixel, 0));
+    if (depth <= 0.0) discard;  // nothing drawn: the sky pass's
+    return composed(pixel, input.uv, depth);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Bruneton and Neyret 2008's parameterization of their tables (document 002; the paper's
+// Bruneton and Neyret 2008's parameterization of their tables (Bruneton and Neyret 2008; the paper's
 // section 4) and its inverse on the CPU, in double precision: the twin of
 // shaders/atmosphere/bruneton/parameterization.hlsli, for the tests and the reference.
 //
@@ -22,7 +22,7 @@
 
 namespace firmament::atmosphere::bruneton {
 
-// Sizes of the tables. Full is the paper's (and document 002's) size.
+// Sizes of the tables. Full is the paper's (and Bruneton and Neyret 2008's) size.
 struct Dimensions {
     int transmittanceMu = 256, transmittanceR = 64;  // 2D transmittance to the top of the atmosphere
     int irradianceMuS = 64, irradianceR = 16;        // 2D ground irradiance
@@ -44,7 +44,7 @@ double unitToTexture(double u, int n);  // 0.5 / n + u (1 - 1 / n)
 double textureToUnit(double x, int n);
 
 // Transmittance table: u_r = sqrt((r - Rg) / (Rt - Rg)), u_mu = atan((mu + 0.15) / 1.15 tan 1.5) / 1.5
-// (document 002), so that texels crowd near the ground and near the horizon.
+// (Bruneton and Neyret 2008), so that texels crowd near the ground and near the horizon.
 glm::dvec2 transmittanceUnit(const AtmosphereParameters& p, double r, double mu);  // (u_mu, u_r)
 Coordinates transmittanceCoordinates(const AtmosphereParameters& p, glm::dvec2 unit);  // r and mu
 

@@ -1,8 +1,9 @@
 #pragma once
-// Draws the atmosphere with Bruneton and Neyret 2008's tables
-// (shaders/atmosphere/bruneton/render.hlsl): sky, ground and sun composed as document 002
-// does, over the whole frame, over its right part (the split view), or as the absolute
-// difference from what another model drew (the difference view).
+// Draws Bruneton and Neyret 2008's atmosphere with its tables
+// (shaders/atmosphere/bruneton/render.hlsl): sky, ground and sun composed as the paper does,
+// as two passes like Yusov's model's (the sky where nothing was drawn, the aerial perspective
+// over geometry), over the whole frame, over its right part (the split view), or as the
+// absolute difference from what another model drew (the difference view).
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"
 #include "gpu/FullscreenPass.h"
 
@@ -10,17 +11,30 @@ namespace firmament {
 
 enum class BrunetonView : unsigned { WholeFrame = 0, RightOfColumn = 1, DifferenceFromOther = 2 };
 
+// Where and how the model draws: `firstColumn` is where RightOfColumn starts; `otherModel` is
+// the frame to subtract (DifferenceFromOther only).
+struct BrunetonComposition {
+    BrunetonView view = BrunetonView::WholeFrame;
+    unsigned firstColumn = 0;
+    ID3D11ShaderResourceView* otherModel = nullptr;
+};
+
 class BrunetonPass {
 public:
     explicit BrunetonPass(ID3D11Device* device);
 
-    // `sceneRadiance`: the frame before the atmosphere; `otherModel`: the frame to subtract
-    // (DifferenceFromOther only); `firstColumn`: where RightOfColumn starts.
-    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, const BrunetonPrecomputation& tables, ID3D11Buffer* frameConstants,
-                ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target, BrunetonView view,
-                unsigned firstColumn = 0, ID3D11ShaderResourceView* otherModel = nullptr);
+    void renderSky(ID3D11DeviceContext* context, ShaderLibrary& shaders, const BrunetonPrecomputation& tables, ID3D11Buffer* frameConstants,
+                   ID3D11ShaderResourceView* depth, const Texture2D& target, const BrunetonComposition& composition);
+    // `sceneRadiance`: the frame before this pass (a copy of it).
+    void renderAerialPerspective(ID3D11DeviceContext* context, ShaderLibrary& shaders, const BrunetonPrecomputation& tables,
+                                 ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth,
+                                 const Texture2D& target, const BrunetonComposition& composition);
 
 private:
+    void draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& pixelShader, const BrunetonPrecomputation& tables,
+              ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target,
+              const BrunetonComposition& composition);
+
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::AtmosphereConstants> atmosphere_;
     ConstantBuffer<gpu::BrunetonConstants> bruneton_;

@@ -1,6 +1,6 @@
 #include "atmosphere/bruneton/BrunetonTableFiles.h"
 
-#include "atmosphere/TableFileSupport.h"
+#include "tables/TableFiles.h"
 #include "core/Error.h"
 #include "gpu/Readback.h"
 
@@ -17,7 +17,7 @@ constexpr const char* kInscatterFile = "bruneton-inscatter.exr";
 ExrAttributes commonAttributes(const BrunetonParameters& p, const std::string& key) {
     ExrAttributes a = p.physics.exrAttributes();
     a["firmament.lut.key"] = key;
-    a["firmament.lut.model"] = std::string("Bruneton and Neyret 2008 (document 002)");
+    a["firmament.lut.model"] = std::string("Bruneton and Neyret 2008");
     a["firmament.atmosphere.groundAlbedo"] = static_cast<float>(p.groundAlbedo);
     a["firmament.lut.parameterization"] = std::string(
         "in-scatter: u_r = rho / H (rho = sqrt(r^2 - Rg^2), H = sqrt(Rt^2 - Rg^2)); u_mu: rays to the ground in the lower half, "
@@ -36,7 +36,7 @@ FloatRgbaImage floatImage(const ReadbackImage& texels) {
 
 }  // namespace
 
-void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, const BrunetonPrecomputation& tables,
+void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const BrunetonPrecomputation& tables,
                            const std::string& key, const std::filesystem::path& folder, const std::string& prefix) {
     const BrunetonParameters& p = tables.parameters();
     const auto& n = p.lut;
@@ -70,7 +70,7 @@ void writeScatteringTables(ID3D11Device* device, ID3D11DeviceContext* context, c
     writeTableAtomically(folder / (prefix + kInscatterFile), inscatter, a);
 }
 
-std::string readScatteringTables(ID3D11DeviceContext* context, BrunetonPrecomputation& tables, const std::string& key,
+std::string readTables(ID3D11DeviceContext* context, BrunetonPrecomputation& tables, const std::string& key,
                                  const std::filesystem::path& folder, const std::string& prefix) {
     const auto& n = tables.parameters().lut;
     const auto transmittancePath = folder / (prefix + kTransmittanceFile), irradiancePath = folder / (prefix + kIrradianceFile),

@@ -1,7 +1,7 @@
 // Runs the program's look-up functions at points the test chooses, so that the tables can be
 // compared with the CPU reference anywhere, not only at texel centres. Compiled with the
 // program's shader folder as the include root.
-#include "atmosphere/lut_lookup.hlsli"
+#include "atmosphere/yusov/lookup.hlsli"
 
 cbuffer AtmosphereBuffer : register(b0) {
     AtmosphereConstants atmosphere;

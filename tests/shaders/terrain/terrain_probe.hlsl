@@ -37,6 +37,6 @@ void surface(uint3 id : SV_DispatchThreadID) {
 [numthreads(64, 1, 1)]
 void shading(uint3 id : SV_DispatchThreadID) {
     Query q = queries[id.x];
-    GroundLight light = groundLight(q.a.w, dot(q.c.xyz, q.d.xyz), false);
+    GroundLight light = groundLight(q.a.w, dot(q.c.xyz, q.d.xyz));
     results[id.x] = float4(lambertianRadiance(q.a.rgb, q.b.xyz, q.c.xyz, q.d.xyz, q.b.w, light), 0.0);
 }

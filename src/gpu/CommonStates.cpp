@@ -1,0 +1,87 @@
+#include "gpu/CommonStates.h"
+
+#include "gpu/Hresult.h"
+
+namespace firmament::states {
+
+namespace {
+
+ComPtr<ID3D11SamplerState> sampler(ID3D11Device* device, D3D11_FILTER filter, D3D11_TEXTURE_ADDRESS_MODE address,
+                                   D3D11_COMPARISON_FUNC comparison, const char* what) {
+    D3D11_SAMPLER_DESC desc{};
+    desc.Filter = filter;
+    desc.AddressU = desc.AddressV = desc.AddressW = address;
+    desc.ComparisonFunc = comparison;
+    desc.MaxLOD = D3D11_FLOAT32_MAX;
+    ComPtr<ID3D11SamplerState> state;
+    check(device->CreateSamplerState(&desc, &state), what);
+    return state;
+}
+
+ComPtr<ID3D11RasterizerState> rasterizer(ID3D11Device* device, D3D11_CULL_MODE cull, bool scissor, float slopeScaledBias, bool depthClip,
+                                         const char* what) {
+    D3D11_RASTERIZER_DESC desc{};
+    desc.FillMode = D3D11_FILL_SOLID;
+    desc.CullMode = cull;
+    desc.SlopeScaledDepthBias = slopeScaledBias;
+    desc.DepthClipEnable = depthClip;
+    desc.ScissorEnable = scissor;
+    ComPtr<ID3D11RasterizerState> state;
+    check(device->CreateRasterizerState(&desc, &state), what);
+    return state;
+}
+
+ComPtr<ID3D11DepthStencilState> depthStencil(ID3D11Device* device, bool enable, D3D11_COMPARISON_FUNC test, const char* what) {
+    D3D11_DEPTH_STENCIL_DESC desc{};
+    desc.DepthEnable = enable;
+    desc.DepthWriteMask = enable ? D3D11_DEPTH_WRITE_MASK_ALL : D3D11_DEPTH_WRITE_MASK_ZERO;
+    desc.DepthFunc = enable ? test : D3D11_COMPARISON_ALWAYS;
+    ComPtr<ID3D11DepthStencilState> state;
+    check(device->CreateDepthStencilState(&desc, &state), what);
+    return state;
+}
+
+}  // namespace
+
+ComPtr<ID3D11SamplerState> linearClamp(ID3D11Device* device) {
+    return sampler(device, D3D11_FILTER_MIN_MAG_MIP_LINEAR, D3D11_TEXTURE_ADDRESS_CLAMP, D3D11_COMPARISON_NEVER, "CreateSamplerState (linear clamp)");
+}
+
+ComPtr<ID3D11SamplerState> linearWrap(ID3D11Device* device) {
+    return sampler(device, D3D11_FILTER_MIN_MAG_MIP_LINEAR, D3D11_TEXTURE_ADDRESS_WRAP, D3D11_COMPARISON_NEVER, "CreateSamplerState (linear wrap)");
+}
+
+ComPtr<ID3D11SamplerState> shadowComparison(ID3D11Device* device) {
+    return sampler(device, D3D11_FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT, D3D11_TEXTURE_ADDRESS_CLAMP, D3D11_COMPARISON_LESS_EQUAL,
+                   "CreateSamplerState (shadow comparison)");
+}
+
+ComPtr<ID3D11RasterizerState> cullNone(ID3D11Device* device) {
+    return rasterizer(device, D3D11_CULL_NONE, false, 0.0f, true, "CreateRasterizerState (cull none)");
+}
+
+ComPtr<ID3D11RasterizerState> cullBack(ID3D11Device* device) {
+    return rasterizer(device, D3D11_CULL_BACK, false, 0.0f, true, "CreateRasterizerState (cull back)");
+}
+
+ComPtr<ID3D11RasterizerState> cullBackScissored(ID3D11Device* device) {
+    return rasterizer(device, D3D11_CULL_BACK, true, 0.0f, true, "CreateRasterizerState (cull back, scissored)");
+}
+
+ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScaledBias) {
+    return rasterizer(device, D3D11_CULL_NONE, false, slopeScaledBias, false, "CreateRasterizerState (shadow casters)");
+}
+
+ComPtr<ID3D11DepthStencilState> depthNone(ID3D11Device* device) {
+    return depthStencil(device, false, D3D11_COMPARISON_ALWAYS, "CreateDepthStencilState (no depth)");
+}
+
+ComPtr<ID3D11DepthStencilState> depthReversed(ID3D11Device* device) {
+    return depthStencil(device, true, D3D11_COMPARISON_GREATER_EQUAL, "CreateDepthStencilState (reversed Z)");
+}
+
+ComPtr<ID3D11DepthStencilState> depthLess(ID3D11Device* device) {
+    return depthStencil(device, true, D3D11_COMPARISON_LESS, "CreateDepthStencilState (less)");
+}
+
+}  // namespace firmament::states

@@ -1,0 +1,34 @@
+#pragma once
+// The Direct3D 11 state objects Firmament's passes use, each described once, in the manner of
+// DirectXTK's CommonStates. Every call creates (or, for an identical description, gets back
+// from the runtime's cache) the state; a technique keeps the ones it binds.
+#include <d3d11.h>
+#include <wrl/client.h>
+
+namespace firmament::states {
+
+using Microsoft::WRL::ComPtr;
+
+// Samplers.
+ComPtr<ID3D11SamplerState> linearClamp(ID3D11Device* device);  // trilinear, clamped: every table look-up
+ComPtr<ID3D11SamplerState> linearWrap(ID3D11Device* device);   // trilinear, wrapped: tiling fields (the terrain's)
+// Bilinear depth comparison (LESS_EQUAL: lit where the stored depth is not nearer), clamped:
+// percentage-closer filtering of shadow maps.
+ComPtr<ID3D11SamplerState> shadowComparison(ID3D11Device* device);
+
+// Rasterizer states, all solid and depth-clipped unless said otherwise.
+ComPtr<ID3D11RasterizerState> cullNone(ID3D11Device* device);
+ComPtr<ID3D11RasterizerState> cullBack(ID3D11Device* device);  // clockwise triangles are the front
+// Back-face culling inside the scissor rectangle (a pass drawn over part of the frame).
+ComPtr<ID3D11RasterizerState> cullBackScissored(ID3D11Device* device);
+// Shadow casters: no culling, a slope-scaled depth bias, and no depth clipping, so that casters
+// nearer the light than the cascade's range clamp to its near plane and still cast.
+ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScaledBias);
+
+// Depth-stencil states. Firmament's depth is reversed (1 at the near plane, 0 at the far one,
+// cleared to 0; src/core/Camera.h), so "nearer or equal" is GREATER_EQUAL.
+ComPtr<ID3D11DepthStencilState> depthNone(ID3D11Device* device);            // no test, no write
+ComPtr<ID3D11DepthStencilState> depthReversed(ID3D11Device* device);        // test GREATER_EQUAL and write
+ComPtr<ID3D11DepthStencilState> depthLess(ID3D11Device* device);            // test LESS and write (shadow maps keep standard depth)
+
+}  // namespace firmament::states

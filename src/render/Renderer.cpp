@@ -1,0 +1,128 @@
+#include "render/Renderer.h"
+
+#include "atmosphere/Atmosphere.h"
+#include "atmosphere/AtmosphereParameters.h"
+#include "render/FrameContext.h"
+#include "scene/OrientationGridPass.h"
+#include "settings/State.h"
+#include "shadows/CascadedShadowMaps.h"
+#include "postfx/ToneMapping.h"
+#include "terrain/ClipmapLayout.h"
+#include "terrain/HeightFieldFile.h"
+#include "terrain/Terrain.h"
+
+#include <algorithm>
+
+namespace firmament {
+
+namespace {
+// Linear radiance of the HDR frame where no pass draws (everything off but the tone mapping).
+constexpr float kBackground[4] = {0.02f, 0.025f, 0.035f, 1.0f};
+}  // namespace
+
+Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, const TableStorage& tables)
+    : device_(device),
+      context_(context),
+      shaders_(shaders),
+      profiler_(device, context),
+      frameConstants_(device),
+      orientationGrid_(std::make_unique<OrientationGridPass>(device)),
+      atmosphere_(std::make_unique<Atmosphere>(device, tables)),
+      terrain_(std::make_unique<Terrain>(device, loadOrGenerateHeightField(TerrainGeneratorParameters{}, tables.cacheFolder),
+                                         AtmosphereParameters{}.earthRadius)),
+      shadows_(std::make_unique<CascadedShadowMaps>(device)),
+      toneMapping_(std::make_unique<ToneMapping>(device)) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::resize(int width, int height, bool ownOutput) { targets_.resize(device_, width, height, ownOutput); }
+
+// The frame order. Each step is one technique's pass or passes; each hands what the next need
+// explicitly (the ground's lighting, the shadow cascades).
+void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID3D11RenderTargetView* output,
+                      const std::function<void(ID3D11RenderTargetView*)>& drawGui) {
+    if (!output) output = targets_.output().rtv.Get();
+    profiler_.beginFrame();
+    const gpu::FrameConstants constants = frameConstants(state, time);
+    frameConstants_.update(context_, constants);
+    FrameContext frame{device_, context_, shaders_, profiler_, targets_, frameConstants_.get(), constants, state.camera, state.sun,
+                       time.seconds, time.deltaSeconds, finishWorkNow};
+    {
+        auto pass = profiler_.scope("Clear frame targets");
+        context_->ClearRenderTargetView(targets_.hdr().rtv.Get(), kBackground);
+        context_->ClearDepthStencilView(targets_.depth().dsv.Get(), D3D11_CLEAR_DEPTH, 0.0f, 0);  // reversed Z: 0 is the far plane
+    }
+    // 1. The atmosphere's tables, when its settings changed (a window spreads the work over
+    //    frames and shows the grid's own sky until they are ready).
+    atmosphere_->update(frame, state.atmosphere);
+    const bool scattering = atmosphere_->ready(state.atmosphere);
+    // 2. The orientation grid: its ground alone under the atmosphere, else its own sky too.
+    if (state.scene.orientationGrid) {
+        auto pass = profiler_.scope("Orientation grid");
+        orientationGrid_->render(frame, scattering);
+    }
+    // 3. The shadow cascades, then 4. the terrain lit by the atmosphere's tables through them.
+    if (state.terrain.enabled) renderShadowsAndTerrain(frame, state);
+    // 5. The sky and the sun where nothing was drawn, 6. the aerial perspective over geometry.
+    atmosphere_->renderSky(frame, state.atmosphere);
+    atmosphere_->renderAerialPerspective(frame, state.atmosphere);
+    // 7. Luminance, exposure, adaptation and tone mapping to the output.
+    toneMapping_->render(frame, state.toneMapping, output);
+    // 8. The GUI over the output.
+    if (drawGui) {
+        auto pass = profiler_.scope("GUI");
+        drawGui(output);
+    }
+    profiler_.endFrame();
+}
+
+// The cascades fit the camera; the terrain is their only caster so far. Casters may stand as far
+// towards the sun as the highest peak can be seen above the sun's elevation, within 200 km.
+void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) {
+    terrain_->place(glm::dvec3(state.camera.position));
+    const glm::dvec3 toSun = glm::dvec3(state.sun.direction());
+    const double reach = std::min((terrain_->maxAltitude() - terrain_->minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
+    shadows_->update(frame.context, state.camera, static_cast<double>(frame.width()) / frame.height(), toSun, state.shadows, reach);
+    if (!shadows_->cascades().empty()) {
+        auto pass = profiler_.scope("Shadow cascades");
+        shadows_->render(frame.context, [&](ID3D11Buffer* caster) { terrain_->renderDepth(frame.context, frame.shaders, caster); });
+    }
+    auto pass = profiler_.scope("Terrain");
+    for (const GroundLighting& lighting : atmosphere_->groundLighting(frame, state.atmosphere))
+        terrain_->render(frame, lighting, shadows_->inputs(), state.terrain);
+}
+
+gpu::FrameConstants Renderer::frameConstants(const State& state, FrameTime time) const {
+    const float width = static_cast<float>(targets_.width()), height = static_cast<float>(targets_.height());
+    const glm::mat4 projection = state.camera.projection(width / height);
+    const glm::mat4 viewProjection = projection * state.camera.view();
+    glm::mat4 rotationOnly = state.camera.view();
+    rotationOnly[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    gpu::FrameConstants c{};
+    c.viewProjection = viewProjection;
+    c.inverseViewProjection = glm::inverse(viewProjection);
+    c.clipToDirection = glm::inverse(projection * rotationOnly);
+    c.cameraPosition = glm::vec4(state.camera.position, state.camera.position.y);
+    c.directionToSun = glm::vec4(state.sun.direction(), 0.0f);
+    c.screen = glm::vec4(width, height, 1.0f / width, 1.0f / height);
+    c.time = glm::vec4(static_cast<float>(time.seconds), 0.0f, 0.0f, 0.0f);
+    c.sunIrradiance = glm::vec4(glm::vec3(state.atmosphere.sunIntensity), 0.0f);
+    const ClipmapExtent terrain = clipmapExtent(glm::dvec2(state.camera.position.x, state.camera.position.z));
+    c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), state.terrain.enabled ? static_cast<float>(terrain.halfWidth) : 0.0f,
+                         static_cast<float>(terrain.centre.x), static_cast<float>(terrain.centre.y));
+    return c;
+}
+
+double Renderer::groundY(double x, double z) const { return terrain_->groundY(x, z); }
+
+RendererStatus Renderer::status(const State& state) {
+    return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress()};
+}
+
+ExrAttributes Renderer::captureAttributes(const State& state) {
+    ExrAttributes a = toneMapping_->captureAttributes(device_, context_, state.toneMapping);
+    a.merge(atmosphere_->captureAttributes(state.atmosphere));
+    return a;
+}
+
+}  // namespace firmament

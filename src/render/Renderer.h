@@ -1,0 +1,90 @@
+#pragma once
+// The frame's one owner: the frame targets, the frame constants, the GPU profiler and every
+// technique, called in the frame order that Renderer::render() lists, top to bottom
+// (README, "Architecture"). The application drives it once a frame with the state to draw; the
+// techniques stay behind this header, so that adding one touches its own folder, its settings,
+// its panel file, and one line of the frame order.
+#include "core/ExrImage.h"
+#include "gpu/ConstantBuffer.h"
+#include "gpu/GpuProfiler.h"
+#include "gpu/SharedStructures.h"
+#include "postfx/ExposureReading.h"
+#include "render/FrameTargets.h"
+#include "tables/CachedTables.h"
+
+#include <d3d11.h>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace firmament {
+
+class ShaderLibrary;
+struct State;
+struct FrameContext;
+class Atmosphere;
+class CascadedShadowMaps;
+class OrientationGridPass;
+class Terrain;
+class ToneMapping;
+
+// When the frame is: the time since the start, and the step from the last frame.
+struct FrameTime {
+    double seconds = 0.0;
+    double deltaSeconds = 0.0;
+};
+
+// What the GUI shows of the techniques' state.
+struct RendererStatus {
+    ExposureReading exposure;                  // what the tone mapping applied, a few frames ago
+    std::optional<double> atmosphereProgress;  // 0..1 while the atmosphere's tables are computed
+};
+
+class Renderer {
+public:
+    // Makes every technique: the terrain's height field comes from the table cache or is
+    // generated into it. Throws Error.
+    Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, const TableStorage& tables);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // (Re)creates the frame targets; `ownOutput`: an 8-bit output target of the renderer's own
+    // (headless runs; a window renders into its swap chain's back buffer).
+    void resize(int width, int height, bool ownOutput);
+
+    // One frame of `state` into `output` (the renderer's own when null), every pass in frame
+    // order; `drawGui`, when given, is the last pass. `finishWorkNow`: work that is spread over
+    // frames (the tables) completes in this one.
+    void render(const State& state, FrameTime time, bool finishWorkNow, ID3D11RenderTargetView* output,
+                const std::function<void(ID3D11RenderTargetView*)>& drawGui);
+
+    // World y of the terrain's surface at (x, z), for the camera's clearance.
+    double groundY(double x, double z) const;
+    RendererStatus status(const State& state);
+    // What each technique records of itself in a capture's header ("firmament.toneMapping.*",
+    // "firmament.atmosphere.*"); waits for the GPU.
+    ExrAttributes captureAttributes(const State& state);
+
+    const FrameTargets& targets() const { return targets_; }
+    GpuProfiler& profiler() { return profiler_; }
+
+private:
+    gpu::FrameConstants frameConstants(const State& state, FrameTime time) const;
+    void renderShadowsAndTerrain(FrameContext& frame, const State& state);
+
+    ID3D11Device* device_;
+    ID3D11DeviceContext* context_;
+    ShaderLibrary& shaders_;
+    GpuProfiler profiler_;
+    FrameTargets targets_;
+    ConstantBuffer<gpu::FrameConstants> frameConstants_;
+    std::unique_ptr<OrientationGridPass> orientationGrid_;
+    std::unique_ptr<Atmosphere> atmosphere_;
+    std::unique_ptr<Terrain> terrain_;
+    std::unique_ptr<CascadedShadowMaps> shadows_;
+    std::unique_ptr<ToneMapping> toneMapping_;
+};
+
+}  // namespace firmament
