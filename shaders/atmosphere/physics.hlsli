@@ -3,7 +3,7 @@
 // The atmosphere's physics on the GPU: geometry of the spherical Earth, particle densities,
 // optical depth and phase functions. Positions are relative to the Earth's centre, in metres.
 // The same equations in double precision: src/atmosphere/ReferenceAtmosphere.cpp.
-#include "common/shared_structures.hlsli"
+#include "atmosphere/atmosphere_structures.hlsli"
 
 static const float kPi = 3.14159265358979;
 

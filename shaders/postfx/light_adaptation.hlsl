@@ -4,7 +4,7 @@
 // with time constant tau, whatever the frame rate. A weight of 1 takes the measured value
 // (adaptation off, or the first frame).
 #include "common/fullscreen_triangle.hlsli"
-#include "common/shared_structures.hlsli"
+#include "postfx/postfx_structures.hlsli"
 
 cbuffer SceneLuminanceBuffer : register(b0) {
     SceneLuminanceConstants sceneLuminance;

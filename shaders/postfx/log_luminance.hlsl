@@ -4,7 +4,7 @@
 // counts whatever its size; for a 256 x 256 frame that grid is every pixel exactly.
 // Steps 2 (average_downsample.hlsl) and 3 (light_adaptation.hlsl) follow.
 #include "common/fullscreen_triangle.hlsli"
-#include "common/shared_structures.hlsli"
+#include "postfx/postfx_structures.hlsli"
 #include "postfx/tone_mapping_operators.hlsli"
 
 cbuffer SceneLuminanceBuffer : register(b0) {

@@ -2,7 +2,7 @@
 // key / L_avg (times 2^EV) with the adapted log-average luminance from light_adaptation.hlsl;
 // then one of the seven operators (tone_mapping_operators.hlsli) and sRGB encoding.
 #include "common/fullscreen_triangle.hlsli"
-#include "common/shared_structures.hlsli"
+#include "postfx/postfx_structures.hlsli"
 #include "postfx/tone_mapping_operators.hlsli"
 
 cbuffer ToneMappingBuffer : register(b0) {

@@ -5,7 +5,7 @@
 // (ShadowConstants), the Texture2D<float> `shadowMap` (the cascades' atlas) and the
 // SamplerComparisonState `shadowComparison` (LESS_EQUAL, bilinear: each tap is a 2x2
 // percentage-closer filter).
-#include "common/shared_structures.hlsli"
+#include "shadows/shadow_structures.hlsli"
 
 float vectorComponent(float4 v, uint i) { return i == 0 ? v.x : (i == 1 ? v.y : (i == 2 ? v.z : v.w)); }
 float cascadeSplit(uint i) { return vectorComponent(shadows.splits[i / 4], i % 4); }

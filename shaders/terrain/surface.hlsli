@@ -3,7 +3,7 @@
 // The terrain's surface (docs/terrain.md): the height field, bilinear at the mip a grid's vertex
 // spacing calls for, plus metre-scale detail noise, on the Earth's sphere. The CPU twin is
 // src/terrain/TerrainSurface.cpp; tests/gpu/TerrainTest.cpp holds the two together.
-#include "common/shared_structures.hlsli"
+#include "terrain/terrain_structures.hlsli"
 
 // Wellons' lowbias32 integer hash, as the CPU twin.
 uint hash32(uint x) {

@@ -12,7 +12,9 @@
 #ifndef GROUND_LIGHTING
 #define GROUND_LIGHTING 0
 #endif
-#include "common/shared_structures.hlsli"
+#include "atmosphere/atmosphere_structures.hlsli"
+#include "shadows/shadow_structures.hlsli"
+#include "terrain/terrain_structures.hlsli"
 
 cbuffer FrameBuffer : register(b0) { FrameConstants frame; };
 cbuffer AtmosphereBuffer : register(b1) { AtmosphereConstants atmosphere; };

@@ -50,44 +50,26 @@ bool Atmosphere::ready(const AtmosphereSettings& settings) const {
     return settings.enabled && (!usesYusov(settings) || yusov_.current()) && (!usesBruneton(settings) || bruneton_.current());
 }
 
-void Atmosphere::renderSky(FrameContext& frame, const AtmosphereSettings& settings) {
-    if (!ready(settings)) return;
-    auto pass = frame.profiler.scope("Sky");
-    ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
-    const Texture2D& target = frame.targets.hdr();
-    const auto yusov = [&] { yusovPass_.renderSky(frame.context, frame.shaders, settings, *yusov_.current(), frame.frameConstants, depth, target); };
-    const auto bruneton = [&](const BrunetonComposition& composition) {
-        brunetonPass_.renderSky(frame.context, frame.shaders, *bruneton_.current(), frame.frameConstants, depth, target, composition);
-    };
-    switch (settings.comparison) {
-        case ModelComparison::None:
-            if (settings.model == AtmosphereModel::Yusov2013) yusov();
-            else bruneton({});
-            break;
-        case ModelComparison::Split:  // Yusov's on the left, Bruneton's from the middle column on
-            yusov();
-            bruneton({BrunetonView::RightOfColumn, static_cast<unsigned>(frame.width() / 2), nullptr});
-            break;
-        case ModelComparison::Difference:
-            yusov();
-            copyTexture(device_, frame.context, target, yusovFrame_);
-            bruneton({BrunetonView::DifferenceFromOther, 0, yusovFrame_.srv.Get()});
-            break;
-    }
-}
+void Atmosphere::renderSky(FrameContext& frame, const AtmosphereSettings& settings) { render(frame, settings, AtmospherePart::Sky); }
 
 void Atmosphere::renderAerialPerspective(FrameContext& frame, const AtmosphereSettings& settings) {
+    render(frame, settings, AtmospherePart::AerialPerspective);
+}
+
+// The part for the models the settings draw: one of them; both side by side, Yusov's everywhere
+// and Bruneton's over it from the middle column on; or Bruneton's as its difference from
+// Yusov's, which is drawn first and copied.
+void Atmosphere::render(FrameContext& frame, const AtmosphereSettings& settings, AtmospherePart part) {
     if (!ready(settings)) return;
-    auto pass = frame.profiler.scope("Aerial perspective");
+    auto pass = frame.profiler.scope(part == AtmospherePart::Sky ? "Sky" : "Aerial perspective");
     ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
-    ID3D11ShaderResourceView* scene = frame.targets.copyHdr(frame.context).srv.Get();
+    ID3D11ShaderResourceView* scene = part == AtmospherePart::AerialPerspective ? frame.targets.copyHdr(frame.context).srv.Get() : nullptr;
     const Texture2D& target = frame.targets.hdr();
     const auto yusov = [&] {
-        yusovPass_.renderAerialPerspective(frame.context, frame.shaders, settings, *yusov_.current(), frame.frameConstants, scene, depth, target);
+        yusovPass_.render(frame.context, frame.shaders, part, settings, *yusov_.current(), frame.frameConstants, scene, depth, target);
     };
     const auto bruneton = [&](const BrunetonComposition& composition) {
-        brunetonPass_.renderAerialPerspective(frame.context, frame.shaders, *bruneton_.current(), frame.frameConstants, scene, depth, target,
-                                              composition);
+        brunetonPass_.render(frame.context, frame.shaders, part, *bruneton_.current(), frame.frameConstants, scene, depth, target, composition);
     };
     switch (settings.comparison) {
         case ModelComparison::None:

@@ -53,6 +53,8 @@ public:
     ExrAttributes captureAttributes(const AtmosphereSettings& settings) const;
 
 private:
+    void render(FrameContext& frame, const AtmosphereSettings& settings, AtmospherePart part);
+
     ID3D11Device* device_;
     TableStorage storage_;
     CachedTables<YusovPrecomputation> yusov_;

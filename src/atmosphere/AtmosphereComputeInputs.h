@@ -3,7 +3,7 @@
 // (b0), the unit of work's range of slices or layers (the last constant buffer), the sampler of
 // every table look-up (s0), and the quadrature directions of the integrals over the sphere.
 #include "gpu/ConstantBuffer.h"
-#include "gpu/SharedStructures.h"
+#include "atmosphere/AtmosphereStructures.h"
 
 #include <d3d11.h>
 #include <wrl/client.h>

@@ -3,10 +3,10 @@
 // spherical Earth under an atmosphere of air molecules (Rayleigh) and aerosols (Mie), each with
 // a density that falls exponentially with altitude, and an optional ozone layer that absorbs.
 // Every constant lives here; the shaders get them through AtmosphereConstants
-// (shaders/common/shared_structures.hlsli). docs/atmosphere.md gives the equations.
+// (shaders/atmosphere/atmosphere_structures.hlsli). docs/atmosphere.md gives the equations.
 #include "atmosphere/AtmosphereSettings.h"
 #include "core/ExrImage.h"
-#include "gpu/SharedStructures.h"
+#include "atmosphere/AtmosphereStructures.h"
 
 #include <glm/glm.hpp>
 

@@ -24,4 +24,15 @@ void FullscreenPass::draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, 
     context->Draw(3, 0);
 }
 
+void FullscreenPass::draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& vertexShader, const ShaderKey& pixelShader,
+                          std::initializer_list<ID3D11Buffer*> constants, std::initializer_list<ID3D11ShaderResourceView*> inputs,
+                          ID3D11SamplerState* sampler) const {
+    context->PSSetConstantBuffers(0, static_cast<UINT>(constants.size()), constants.begin());
+    context->PSSetShaderResources(0, static_cast<UINT>(inputs.size()), inputs.begin());
+    context->PSSetSamplers(0, 1, &sampler);
+    draw(context, shaders, vertexShader, pixelShader);
+    ID3D11ShaderResourceView* none[D3D11_COMMONSHADER_INPUT_RESOURCE_SLOT_COUNT] = {};
+    context->PSSetShaderResources(0, static_cast<UINT>(inputs.size()), none);
+}
+
 }  // namespace firmament

@@ -8,6 +8,8 @@
 
 #include <d3d11.h>
 
+#include <initializer_list>
+
 namespace firmament {
 
 class FullscreenPass {
@@ -19,6 +21,11 @@ public:
     // Sets the two shaders and draws the triangle.
     void draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& vertexShader,
               const ShaderKey& pixelShader) const;
+    // The same, binding the pixel shader's constant buffers (from b0), inputs (from t0) and
+    // sampler (s0) first, and unbinding the inputs after, so that a later pass may write them.
+    void draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& vertexShader, const ShaderKey& pixelShader,
+              std::initializer_list<ID3D11Buffer*> constants, std::initializer_list<ID3D11ShaderResourceView*> inputs,
+              ID3D11SamplerState* sampler) const;
 
 private:
     ComPtr<ID3D11RasterizerState> rasterizer_;

@@ -1,7 +1,8 @@
 #pragma once
-// The constant-buffer structures shared with HLSL: shaders/common/shared_structures.hlsli,
-// read here with HLSL's type names mapped to GLM. That header's static_asserts check that
-// each is a multiple of 16 bytes.
+// The frame's constant-buffer structure shared with HLSL, shaders/common/shared_structures.hlsli,
+// read here with HLSL's type names mapped to GLM; that header's static_asserts check that each
+// structure is a multiple of 16 bytes. Each technique reads its own structures the same way
+// (atmosphere/AtmosphereStructures.h, terrain/TerrainStructures.h, ...).
 #include <glm/glm.hpp>
 
 namespace firmament::gpu {

@@ -10,7 +10,7 @@
 // Everything stays in the log domain: the adapted value is ln of the adapted luminance.
 #include "gpu/ConstantBuffer.h"
 #include "gpu/FullscreenPass.h"
-#include "gpu/SharedStructures.h"
+#include "postfx/PostfxStructures.h"
 #include "gpu/Texture.h"
 
 #include <array>

@@ -5,7 +5,7 @@
 // them, a float target (the tests) keeps them as computed.
 #include "gpu/ConstantBuffer.h"
 #include "gpu/FullscreenPass.h"
-#include "gpu/SharedStructures.h"
+#include "postfx/PostfxStructures.h"
 #include "postfx/ToneMappingSettings.h"
 
 namespace firmament {

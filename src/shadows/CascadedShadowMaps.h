@@ -5,7 +5,7 @@
 // each. The cascades and their matrices stay readable (cascades()) for the light shafts.
 #include "core/Camera.h"
 #include "gpu/ConstantBuffer.h"
-#include "gpu/SharedStructures.h"
+#include "shadows/ShadowStructures.h"
 #include "gpu/Texture.h"
 #include "shadows/CascadeSplits.h"
 #include "shadows/ShadowInputs.h"

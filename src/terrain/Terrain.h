@@ -5,7 +5,7 @@
 // alone into a shadow cascade.
 #include "atmosphere/GroundLighting.h"
 #include "gpu/ConstantBuffer.h"
-#include "gpu/SharedStructures.h"
+#include "terrain/TerrainStructures.h"
 #include "gpu/ShaderLibrary.h"
 #include "gpu/Texture.h"
 #include "shadows/ShadowInputs.h"

@@ -1,9 +1,10 @@
 #pragma once
 // Draws Bruneton and Neyret 2008's atmosphere with its tables
 // (shaders/atmosphere/bruneton/render.hlsl): sky, ground and sun composed as the paper does,
-// as two passes like Yusov's model's (the sky where nothing was drawn, the aerial perspective
-// over geometry), over the whole frame, over its right part (the split view), or as the
+// in the same two parts as Yusov's model (the sky, with his ground and sun, where nothing was
+// drawn; the aerial perspective over geometry: AtmospherePart), over the whole frame, over its right part (the split view), or as the
 // absolute difference from what another model drew (the difference view).
+#include "atmosphere/AtmospherePart.h"
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"
 #include "gpu/FullscreenPass.h"
 
@@ -23,18 +24,12 @@ class BrunetonPass {
 public:
     explicit BrunetonPass(ID3D11Device* device);
 
-    void renderSky(ID3D11DeviceContext* context, ShaderLibrary& shaders, const BrunetonPrecomputation& tables, ID3D11Buffer* frameConstants,
-                   ID3D11ShaderResourceView* depth, const Texture2D& target, const BrunetonComposition& composition);
-    // `sceneRadiance`: the frame before this pass (a copy of it).
-    void renderAerialPerspective(ID3D11DeviceContext* context, ShaderLibrary& shaders, const BrunetonPrecomputation& tables,
-                                 ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth,
-                                 const Texture2D& target, const BrunetonComposition& composition);
+    // `sceneRadiance`: a copy of the frame before this pass (the aerial perspective reads it).
+    void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, AtmospherePart part, const BrunetonPrecomputation& tables,
+                ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target,
+                const BrunetonComposition& composition);
 
 private:
-    void draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& pixelShader, const BrunetonPrecomputation& tables,
-              ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target,
-              const BrunetonComposition& composition);
-
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::AtmosphereConstants> atmosphere_;
     ConstantBuffer<gpu::BrunetonConstants> bruneton_;

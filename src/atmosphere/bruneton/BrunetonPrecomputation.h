@@ -14,7 +14,7 @@
 #include "atmosphere/bruneton/BrunetonParameterization.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/ShaderLibrary.h"
-#include "gpu/SharedStructures.h"
+#include "atmosphere/AtmosphereStructures.h"
 #include "gpu/Texture.h"
 #include "tables/StagedComputation.h"
 

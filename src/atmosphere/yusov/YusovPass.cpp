@@ -8,9 +8,7 @@
 namespace firmament {
 
 namespace {
-const ShaderKey kVertexShader{"atmosphere/yusov/render.hlsl", "vs_main", "vs_5_0", {}};
-const ShaderKey kSkyShader{"atmosphere/yusov/render.hlsl", "ps_sky", "ps_5_0", {}};
-const ShaderKey kAerialPerspectiveShader{"atmosphere/yusov/render.hlsl", "ps_aerial_perspective", "ps_5_0", {}};
+const std::string kShaderFile = "atmosphere/yusov/render.hlsl";
 }  // namespace
 
 YusovPass::YusovPass(ID3D11Device* device)
@@ -24,34 +22,18 @@ gpu::YusovPassConstants YusovPass::constants(const AtmosphereSettings& settings)
     return c;
 }
 
-void YusovPass::renderSky(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
-                          const YusovPrecomputation& tables, ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* depth,
-                          const Texture2D& target) {
-    draw(context, shaders, kSkyShader, settings, tables, frameConstants, nullptr, depth, target);
-}
-
-void YusovPass::renderAerialPerspective(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
-                                        const YusovPrecomputation& tables, ID3D11Buffer* frameConstants,
-                                        ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth, const Texture2D& target) {
-    draw(context, shaders, kAerialPerspectiveShader, settings, tables, frameConstants, sceneRadiance, depth, target);
-}
-
-void YusovPass::draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& pixelShader, const AtmosphereSettings& settings,
-                     const YusovPrecomputation& tables, ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance,
-                     ID3D11ShaderResourceView* depth, const Texture2D& target) {
+void YusovPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, AtmospherePart part, const AtmosphereSettings& settings,
+                       const YusovPrecomputation& tables, ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance,
+                       ID3D11ShaderResourceView* depth, const Texture2D& target) {
     atmosphere_.update(context, tables.parameters().constants());
     constants_.update(context, constants(settings));
     fullscreen_.bindTarget(context, target.rtv.Get(), target.width, target.height);
-    ID3D11Buffer* buffers[3] = {frameConstants, atmosphere_.get(), constants_.get()};
-    context->PSSetConstantBuffers(0, 3, buffers);
     const YusovTables& t = tables.tables();
-    ID3D11ShaderResourceView* inputs[6] = {sceneRadiance, depth, t.netDensity.srv.Get(), t.singleScattering.srv.Get(),
-                                           t.highOrderScattering.srv.Get(), t.multipleScattering.srv.Get()};
-    context->PSSetShaderResources(0, 6, inputs);
-    context->PSSetSamplers(0, 1, linearClamp_.GetAddressOf());
-    fullscreen_.draw(context, shaders, kVertexShader, pixelShader);
-    ID3D11ShaderResourceView* none[6] = {};
-    context->PSSetShaderResources(0, 6, none);
+    fullscreen_.draw(context, shaders, atmosphereVertexShader(kShaderFile), atmospherePixelShader(kShaderFile, part),
+                     {frameConstants, atmosphere_.get(), constants_.get()},
+                     {sceneRadiance, depth, t.netDensity.srv.Get(), t.singleScattering.srv.Get(), t.highOrderScattering.srv.Get(),
+                      t.multipleScattering.srv.Get()},
+                     linearClamp_.Get());
 }
 
 }  // namespace firmament

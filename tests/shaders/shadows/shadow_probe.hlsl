@@ -3,7 +3,7 @@
 //   occluder_vs: a horizontal square, square = (x min, z min, x max, z max) at y = height.x,
 //                through the cascade's ShadowCasterConstants (b5).
 //   visibility:  q.a = (world xyz, view depth), q.b = (normal xyz) -> (visibility, cascade, 0, 0)
-#include "common/shared_structures.hlsli"
+#include "shadows/shadow_structures.hlsli"
 
 cbuffer ShadowBuffer : register(b0) { ShadowConstants shadows; };
 cbuffer OccluderBuffer : register(b1) {

@@ -7,7 +7,8 @@
 #ifndef GROUND_LIGHTING
 #define GROUND_LIGHTING 0
 #endif
-#include "common/shared_structures.hlsli"
+#include "atmosphere/atmosphere_structures.hlsli"
+#include "terrain/terrain_structures.hlsli"
 
 cbuffer AtmosphereBuffer : register(b0) { AtmosphereConstants atmosphere; };
 cbuffer BrunetonBuffer : register(b1) { BrunetonConstants bruneton; };
