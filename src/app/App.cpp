@@ -1,5 +1,6 @@
 #include "app/App.h"
 
+#include "app/BenchmarkRunner.h"
 #include "app/Capture.h"
 #include "atmosphere/SunAnimation.h"
 #include "core/Error.h"
@@ -312,6 +313,23 @@ void App::captureFrame() {
     writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, targets.hdr().texture.Get()), d);
     log::info("captured " + options_.capturePng().string() + " and " + options_.captureExr().string());
+}
+
+int App::runBenchmark(const BenchmarkPlan& plan) {
+    ensureWritable(options_.benchmarkResults());
+    log::info("benchmark '" + plan.name + "': " + std::to_string(plan.scenarios.size()) + " scenarios, " + std::to_string(plan.warmupFrames) +
+              " warm-up and " + std::to_string(plan.measuredFrames) + " measured frames each, on " + device_.describe());
+    const auto scratch = std::filesystem::temp_directory_path() / ("firmament-benchmark-" + std::to_string(GetCurrentProcessId()));
+    const BenchmarkRun run = firmament::runBenchmark(renderer_, device_.context(), plan, scratch);
+    std::error_code ec;
+    std::filesystem::remove_all(scratch, ec);
+    const BenchmarkInfo info{kFirmamentVersion, device_.describe(), options_.benchmark ? options_.benchmark->string() : std::string()};
+    const std::string text = benchmarkReport(plan, run.results, run.tables, info).dump(2) + "\n";
+    writeFileBytes(options_.benchmarkResults(), std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    std::fputs(benchmarkTable(plan, run.results, run.tables).c_str(), stdout);
+    std::printf("\nbenchmark results written to %s\n", options_.benchmarkResults().string().c_str());
+    std::fflush(stdout);
+    return 0;
 }
 
 void App::printTimings() {

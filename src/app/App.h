@@ -1,6 +1,7 @@
 #pragma once
 // The program: the window, the device and swap chain, input, the frame loop, flights,
-// and captures. The frame itself, every technique and its order, is the Renderer's.
+// captures and benchmarks. The frame itself, every technique and its order, is the Renderer's.
+#include "app/BenchmarkPlan.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
 #include "app/StepTimer.h"
@@ -25,6 +26,8 @@ public:
     // `flight`: a camera path to play back first (--flight).
     App(const Options& options, const State& state, std::optional<FlightPath> flight);  // throws Error
     int run();                                         // returns the exit code
+    // --benchmark: runs the plan's scenarios, prints the table, writes the JSON; the exit code.
+    int runBenchmark(const BenchmarkPlan& plan);
 
 private:
     void update();

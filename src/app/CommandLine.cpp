@@ -143,7 +143,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             if (!noValue()) return result;
             o.noCache = true;
         } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file" || flag == "--flight" ||
-                   flag == "--record-flight" || flag == "--export-luts" || flag == "--cache-dir") {
+                   flag == "--record-flight" || flag == "--export-luts" || flag == "--cache-dir" || flag == "--benchmark" ||
+                   flag == "--benchmark-output") {
             const auto v = value();
             if (!v) return result;
             if (v->empty()) {
@@ -156,6 +157,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             else if (flag == "--record-flight") o.recordFlight = std::filesystem::path(*v);
             else if (flag == "--export-luts") o.exportLuts = std::filesystem::path(*v);
             else if (flag == "--cache-dir") o.cacheDir = std::filesystem::path(*v);
+            else if (flag == "--benchmark") o.benchmark = std::filesystem::path(*v);
+            else if (flag == "--benchmark-output") o.benchmarkOutput = std::filesystem::path(*v);
             else o.stateFile = std::filesystem::path(*v);
         } else if (flag == "--set") {
             const auto v = value();
@@ -180,6 +183,17 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
         }
     }
 
+    if (o.benchmark) {
+        if (o.flight || o.recordFlight || o.capture || o.frames) {
+            result.error = "--benchmark takes its views and frame counts from its scenario file: leave out --flight, --record-flight, "
+                           "--capture and --frames";
+            return result;
+        }
+        o.headless = true;  // a benchmark runs unattended
+    } else if (o.benchmarkOutput) {
+        result.error = "--benchmark-output needs --benchmark";
+        return result;
+    }
     if (hardwareRequested && warpRequested) {
         result.error = "--warp and --hardware exclude each other";
         return result;
@@ -220,6 +234,11 @@ Settings
   --flight FILE          play a recorded camera flight (JSON keyframes); headless
                          runs render its whole length unless --frames is given
   --record-flight FILE   write the camera and sun, ten keyframes a second, on exit
+Benchmark
+  --benchmark FILE       run the scenario file's views x variants x resolutions
+                         headless, print a table of GPU times per pass and write
+                         them as JSON (docs/performance.md)
+  --benchmark-output F   where the JSON goes (default benchmark-results.json)
 Atmosphere
   --export-luts DIR      write every look-up table as a self-describing EXR into DIR
                          once computed (or loaded)

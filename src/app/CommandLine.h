@@ -31,12 +31,15 @@ struct Options {
     std::optional<std::filesystem::path> exportLuts;    // write the atmosphere's tables here as EXR
     std::optional<std::filesystem::path> cacheDir;      // the atmosphere's table cache (default: per user)
     bool noCache = false;                               // compute the tables every run
+    std::optional<std::filesystem::path> benchmark;     // a scenario file to run (implies headless)
+    std::optional<std::filesystem::path> benchmarkOutput;  // the results' JSON (default benchmark-results.json)
     bool help = false;
     bool version = false;
 
     int frameCount() const { return frames.value_or(headless ? 30 : 0); }  // 0: until closed
     std::filesystem::path capturePng() const;
     std::filesystem::path captureExr() const;
+    std::filesystem::path benchmarkResults() const { return benchmarkOutput.value_or("benchmark-results.json"); }
 };
 
 struct ParsedCommandLine {

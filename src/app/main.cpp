@@ -1,6 +1,7 @@
 // firmament.exe: parses the command line, runs the App, and turns every error into one
 // message and a non-zero exit code (1 runtime error, 2 bad command line or settings).
 #include "app/App.h"
+#include "app/BenchmarkPlan.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
 #include "settings/State.h"
@@ -46,18 +47,20 @@ int main() {
     }
     State state;
     std::optional<FlightPath> flight;
+    std::optional<BenchmarkPlan> benchmark;
     try {
         if (parsed.options.flight) flight = FlightPath::load(*parsed.options.flight);
         if (parsed.options.settingsFile) loadStateFile(state, *parsed.options.settingsFile);
         if (parsed.options.vsync) state.display.vsync = *parsed.options.vsync;
         applyAssignments(state, parsed.options.assignments);
+        if (parsed.options.benchmark) benchmark = loadBenchmarkPlan(*parsed.options.benchmark, state);
     } catch (const Error& e) {  // bad settings are bad input, like a bad command line
         log::error(e.what());
         return 2;
     }
     try {
         App app(parsed.options, state, std::move(flight));
-        return app.run();
+        return benchmark ? app.runBenchmark(*benchmark) : app.run();
     } catch (const Error& e) {
         log::error(e.what());
     } catch (const std::exception& e) {

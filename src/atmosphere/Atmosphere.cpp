@@ -140,6 +140,24 @@ ScatteringLookup Atmosphere::scatteringLookup(FrameContext& frame, const Atmosph
     return l;
 }
 
+std::vector<TableTiming> Atmosphere::timeTables(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
+                                                const std::filesystem::path& scratch) {
+    std::vector<TableTiming> timings;
+    if (usesYusov(settings)) {
+        const AtmosphereParameters p = AtmosphereParameters::from(settings);
+        timings.push_back(firmament::timeTables(
+            "Yusov 2013", yusovTableKey(p, shaders), [&] { return std::make_unique<YusovPrecomputation>(device_, p); }, device_, context, shaders,
+            scratch));
+    }
+    if (usesBruneton(settings)) {
+        const BrunetonParameters p = BrunetonParameters::from(settings);
+        timings.push_back(firmament::timeTables(
+            "Bruneton 2008", brunetonTableKey(p, shaders), [&] { return std::make_unique<BrunetonPrecomputation>(device_, p); }, device_, context,
+            shaders, scratch));
+    }
+    return timings;
+}
+
 std::optional<double> Atmosphere::recomputeProgress() const {
     const YusovPrecomputation* y = yusov_.pending();
     const BrunetonPrecomputation* b = bruneton_.pending();

@@ -19,6 +19,7 @@
 #include "core/ExrImage.h"
 #include "render/FrameContext.h"
 #include "tables/CachedTables.h"
+#include "tables/TableTiming.h"
 
 #include <optional>
 #include <vector>
@@ -46,6 +47,11 @@ public:
     std::vector<GroundLighting> groundLighting(FrameContext& frame, const AtmosphereSettings& settings);
     // Yusov's tables for another technique; not ready() when that model's tables do not exist.
     ScatteringLookup scatteringLookup(FrameContext& frame, const AtmosphereSettings& settings);
+
+    // For each model the settings draw: how long its tables take to compute, and to load from a
+    // cache written into `scratch` (the benchmark). Does not touch the tables in use.
+    std::vector<TableTiming> timeTables(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
+                                        const std::filesystem::path& scratch);
 
     // 0..1 while new tables are computed, nullopt otherwise.
     std::optional<double> recomputeProgress() const;

@@ -67,6 +67,13 @@ void GpuProfiler::flush() {
     }
 }
 
+void GpuProfiler::reset() {
+    flush();
+    timings_.clear();
+    timingIndex(kFrameName);  // always the first
+    disjointFrames_ = 0;
+}
+
 size_t GpuProfiler::beginPass(std::string_view name) {
     if (!inFrame_) return SIZE_MAX;
     FrameQueries& frame = frames_[current_];
@@ -108,7 +115,9 @@ bool GpuProfiler::resolve(FrameQueries& frame, bool wait) {
 size_t GpuProfiler::timingIndex(std::string_view name) {
     for (size_t i = 0; i < timings_.size(); ++i)
         if (timings_[i].name == name) return i;
-    timings_.push_back(PassTiming{std::string(name)});
+    PassTiming timing;
+    timing.name = std::string(name);
+    timings_.push_back(std::move(timing));
     return timings_.size() - 1;
 }
 
@@ -119,6 +128,7 @@ void GpuProfiler::record(size_t timing, double ms) {
     t.maxMs = t.frames == 0 ? ms : std::max(t.maxMs, ms);
     t.meanMs += (ms - t.meanMs) / static_cast<double>(t.frames + 1);
     ++t.frames;
+    if (keepSamples_) t.samplesMs.push_back(ms);
 }
 
 GpuProfiler::Scope::Scope(GpuProfiler& profiler, std::string_view name)

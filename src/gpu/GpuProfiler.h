@@ -26,6 +26,7 @@ struct PassTiming {
     double minMs = 0.0;
     double maxMs = 0.0;
     std::uint64_t frames = 0;
+    std::vector<double> samplesMs;  // every resolved frame's time, while keepSamples(true) (benchmarks)
 };
 
 class GpuProfiler {
@@ -50,6 +51,11 @@ public:
 
     // Waits for every frame still in flight and folds it into the statistics.
     void flush();
+    // Forgets every statistic (a benchmark's measured frames start here); frames in flight are
+    // waited for and dropped.
+    void reset();
+    // Keeps each frame's time of each pass in PassTiming::samplesMs, for medians.
+    void keepSamples(bool keep) { keepSamples_ = keep; }
 
     // "Frame" (first timestamp to last of the frame) first, then passes in first-seen order.
     const std::vector<PassTiming>& timings() const { return timings_; }
@@ -81,6 +87,7 @@ private:
     bool inFrame_ = false;
     std::vector<PassTiming> timings_;
     std::uint64_t disjointFrames_ = 0;
+    bool keepSamples_ = false;
 };
 
 }  // namespace firmament

@@ -119,6 +119,10 @@ RendererStatus Renderer::status(const State& state) {
     return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress()};
 }
 
+std::vector<TableTiming> Renderer::timeTables(const State& state, const std::filesystem::path& scratch) {
+    return atmosphere_->timeTables(context_, shaders_, state.atmosphere, scratch);
+}
+
 ExrAttributes Renderer::captureAttributes(const State& state) {
     ExrAttributes a = toneMapping_->captureAttributes(device_, context_, state.toneMapping);
     a.merge(atmosphere_->captureAttributes(state.atmosphere));

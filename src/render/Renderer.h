@@ -11,6 +11,7 @@
 #include "postfx/ExposureReading.h"
 #include "render/FrameTargets.h"
 #include "tables/CachedTables.h"
+#include "tables/TableTiming.h"
 
 #include <d3d11.h>
 
@@ -66,6 +67,10 @@ public:
     // What each technique records of itself in a capture's header ("firmament.toneMapping.*",
     // "firmament.atmosphere.*"); waits for the GPU.
     ExrAttributes captureAttributes(const State& state);
+
+    // How long the tables of `state` take to compute, and to load from a cache written into
+    // `scratch` (the benchmark's record).
+    std::vector<TableTiming> timeTables(const State& state, const std::filesystem::path& scratch);
 
     const FrameTargets& targets() const { return targets_; }
     GpuProfiler& profiler() { return profiler_; }

@@ -31,7 +31,7 @@ public:
 
     // One frame of the whole GUI for `state`.
     void draw(State& state) {
-        const std::vector<PassTiming> timings{{"Frame", 1.0, 1.0, 1.0, 1.0, 3}};
+        const std::vector<PassTiming> timings{{"Frame", 1.0, 1.0, 1.0, 1.0, 3, {}}};
         const FrameTimeHistory frameTimes;
         const std::map<std::string, std::string> shaderErrors{{"terrain", "an error"}};
         GuiModel model{state, FrameStats{16.0, 60.0, 1280, 720, "test"}, timings, frameTimes, shaderErrors, "vkd3d-compiler",
