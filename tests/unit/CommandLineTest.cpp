@@ -86,7 +86,7 @@ TEST(CommandLine, UsageListsEveryOption) {
     const std::string usage = usageText();
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
                                "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
-                               "--shader-source", "--shader-compiler", "--version", "--help"})
+                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 
@@ -100,6 +100,24 @@ TEST(CommandLine, AtmosphereTableOptions) {
     expectError({"--export-luts"}, "--export-luts");
     expectError({"--export-luts", ""}, "empty");
     expectError({"--no-cache=yes"}, "--no-cache");
+}
+
+// A benchmark runs headless on WARP (unless told otherwise) and takes its views and frame
+// counts from its file.
+TEST(CommandLine, BenchmarkOptions) {
+    const ParsedCommandLine p = parse({"--benchmark", "scenarios.json", "--benchmark-output", "out/results.json"});
+    ASSERT_TRUE(p.error.empty()) << p.error;
+    EXPECT_EQ(p.options.benchmark, std::filesystem::path("scenarios.json"));
+    EXPECT_EQ(p.options.benchmarkResults(), std::filesystem::path("out/results.json"));
+    EXPECT_TRUE(p.options.headless);
+    EXPECT_EQ(p.options.driver, DriverType::Warp);
+    EXPECT_EQ(parse({"--benchmark", "b.json"}).options.benchmarkResults(), std::filesystem::path("benchmark-results.json"));
+    EXPECT_EQ(parse({"--benchmark", "b.json", "--hardware"}).options.driver, DriverType::Hardware);
+    expectError({"--benchmark", "b.json", "--frames", "3"}, "--benchmark takes its views");
+    expectError({"--benchmark", "b.json", "--capture", "x.png"}, "--benchmark takes its views");
+    expectError({"--benchmark", "b.json", "--flight", "f.json"}, "--benchmark takes its views");
+    expectError({"--benchmark-output", "r.json"}, "--benchmark-output needs --benchmark");
+    expectError({"--benchmark", ""}, "empty");
 }
 
 }  // namespace
