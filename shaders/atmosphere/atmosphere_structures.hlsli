@@ -22,8 +22,8 @@ FIRMAMENT_CONSTANT_BUFFER(AtmosphereConstants);
 // atmosphere/yusov/render.hlsl
 struct YusovPassConstants {
     uint4 mode;  // x: single scattering (0 none, 1 integration, 2 table); y: integration steps;
-                 // z: multiple scattering (0 none, 1 occluded: the multiple table alone, 2 unoccluded:
-                 // single scattering plus the high-order table); w: unused
+                 // z: multiple scattering (0 none, 1 occluded, 2 unoccluded: docs/atmosphere.md,
+                 // "Render modes"); w: unused
     float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(YusovPassConstants);

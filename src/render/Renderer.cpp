@@ -2,6 +2,7 @@
 
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/AtmosphereParameters.h"
+#include "lightshafts/LightShafts.h"
 #include "render/FrameContext.h"
 #include "scene/OrientationGridPass.h"
 #include "settings/State.h"
@@ -31,6 +32,7 @@ Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLib
       terrain_(std::make_unique<Terrain>(device, loadOrGenerateHeightField(TerrainGeneratorParameters{}, tables.cacheFolder),
                                          AtmosphereParameters{}.earthRadius)),
       shadows_(std::make_unique<CascadedShadowMaps>(device)),
+      lightShafts_(std::make_unique<LightShafts>(device)),
       toneMapping_(std::make_unique<ToneMapping>(device)) {}
 
 Renderer::~Renderer() = default;
@@ -63,9 +65,15 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
     }
     // 3. The shadow cascades, then 4. the terrain lit by the atmosphere's tables through them.
     if (state.terrain.enabled) renderShadowsAndTerrain(frame, state);
-    // 5. The sky and the sun where nothing was drawn, 6. the aerial perspective over geometry.
-    atmosphere_->renderSky(frame, state.atmosphere);
-    atmosphere_->renderAerialPerspective(frame, state.atmosphere);
+    // 5. The sky and the sun where nothing was drawn, 6. the aerial perspective over geometry:
+    //    with light shafts, both in their pass, through the shadow cascades drawn this frame.
+    if (lightShaftsDrawn(state)) {
+        const ShadowInputs shadows = state.terrain.enabled ? shadows_->inputs() : ShadowInputs{};
+        lightShafts_->render(frame, state.lightShafts, atmosphere_->scatteringLookup(frame, state.atmosphere), shadows);
+    } else {
+        atmosphere_->renderSky(frame, state.atmosphere);
+        atmosphere_->renderAerialPerspective(frame, state.atmosphere);
+    }
     // 7. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);
     // 8. The GUI over the output.
@@ -111,6 +119,14 @@ gpu::FrameConstants Renderer::frameConstants(const State& state, FrameTime time)
     c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), state.terrain.enabled ? static_cast<float>(terrain.halfWidth) : 0.0f,
                          static_cast<float>(terrain.centre.x), static_cast<float>(terrain.centre.y));
     return c;
+}
+
+// The light shafts march through Yusov 2013's tables: with his model alone (not Bruneton's, nor
+// a comparison of the two), once the tables exist.
+bool Renderer::lightShaftsDrawn(const State& state) const {
+    const AtmosphereSettings& a = state.atmosphere;
+    return state.lightShafts.enabled && a.model == AtmosphereModel::Yusov2013 && a.comparison == ModelComparison::None &&
+           atmosphere_->ready(a);
 }
 
 double Renderer::groundY(double x, double z) const { return terrain_->groundY(x, z); }

@@ -26,6 +26,7 @@ struct State;
 struct FrameContext;
 class Atmosphere;
 class CascadedShadowMaps;
+class LightShafts;
 class OrientationGridPass;
 class Terrain;
 class ToneMapping;
@@ -78,6 +79,7 @@ public:
 private:
     gpu::FrameConstants frameConstants(const State& state, FrameTime time) const;
     void renderShadowsAndTerrain(FrameContext& frame, const State& state);
+    bool lightShaftsDrawn(const State& state) const;
 
     ID3D11Device* device_;
     ID3D11DeviceContext* context_;
@@ -89,6 +91,7 @@ private:
     std::unique_ptr<Atmosphere> atmosphere_;
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<CascadedShadowMaps> shadows_;
+    std::unique_ptr<LightShafts> lightShafts_;
     std::unique_ptr<ToneMapping> toneMapping_;
 };
 

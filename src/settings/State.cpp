@@ -21,6 +21,7 @@ std::vector<SettingsSection> State::sections() {
             {"atmosphere", [this](SettingsVisitor& v) { atmosphere.visit(v); }},
             {"terrain", [this](SettingsVisitor& v) { terrain.visit(v); }},
             {"shadows", [this](SettingsVisitor& v) { shadows.visit(v); }},
+            {"lightShafts", [this](SettingsVisitor& v) { lightShafts.visit(v); }},
             {"toneMapping", [this](SettingsVisitor& v) { toneMapping.visit(v); }},
             {"shaders", [this](SettingsVisitor& v) { shaders.visit(v); }},
             {"ui", [this](SettingsVisitor& v) { ui.visit(v); }}};

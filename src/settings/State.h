@@ -10,6 +10,7 @@
 #include "core/Settings.h"
 #include "input/FlyCamera.h"
 #include "input/HidReports.h"
+#include "lightshafts/LightShaftSettings.h"
 #include "postfx/ToneMappingSettings.h"
 #include "scene/SceneSettings.h"
 #include "shadows/ShadowSettings.h"
@@ -69,6 +70,7 @@ struct State {
     AtmosphereSettings atmosphere;
     TerrainSettings terrain;
     ShadowSettings shadows;
+    LightShaftSettings lightShafts;
     ToneMappingSettings toneMapping;
     ShaderSettings shaders;
     UiSettings ui;

@@ -106,7 +106,7 @@ void CascadedShadowMaps::render(ID3D11DeviceContext* context, const std::functio
 }
 
 ShadowInputs CascadedShadowMaps::inputs() const {
-    return {constantBuffer_.get(), cascades_.empty() ? nullptr : srv_.Get(), comparison_.Get()};
+    return {constantBuffer_.get(), cascades_.empty() ? nullptr : srv_.Get(), comparison_.Get(), cascades_.empty() ? 0 : resolution_};
 }
 
 }  // namespace firmament

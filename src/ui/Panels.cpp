@@ -12,7 +12,7 @@ namespace {
 
 // The techniques' sections of the Basic and Additional panels, in the order they are drawn.
 const panels::TechniquePanel kTechniques[] = {panels::display(), panels::scene(),  panels::atmosphere(), panels::terrain(),
-                                             panels::shadows(), panels::sun(),    panels::camera(),     panels::shaders()};
+                                             panels::shadows(), panels::lightShafts(), panels::sun(), panels::camera(), panels::shaders()};
 
 void basicPanel(PanelContext& panel) {
     for (const panels::TechniquePanel& t : kTechniques)

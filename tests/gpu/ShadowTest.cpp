@@ -2,6 +2,7 @@
 // into the cascades; at points of the ground the sun's visibility must be 0 where the ray to the
 // sun meets the square and 1 where it does not (points within a few texels of the shadow's edge
 // left out), for every combination of the cascades' options.
+#include "gpu/KnownOccluder.h"
 #include "gpu/WarpDevice.h"
 
 #include "gpu/ConstantBuffer.h"
@@ -18,13 +19,6 @@ struct VisibilityQuery {
     glm::vec4 a, b;
 };
 
-struct OccluderConstants {
-    glm::vec4 square;  // x min, z min, x max, z max
-    glm::vec4 height;  // x: y of the square
-};
-
-constexpr glm::vec4 kSquare(-40.0f, 120.0f, 60.0f, 260.0f);
-constexpr float kSquareHeight = 45.0f;
 
 class Shadows : public WarpDevice {
 protected:
@@ -41,17 +35,7 @@ protected:
 
         CascadedShadowMaps shadows(device());
         shadows.update(context(), camera, 16.0 / 9.0, toSun, settings, 2000.0);
-        ConstantBuffer<OccluderConstants> occluder(device());
-        occluder.update(context(), OccluderConstants{kSquare, glm::vec4(kSquareHeight)});
-        shadows.render(context(), [&](ID3D11Buffer* caster) {
-            context()->VSSetConstantBuffers(5, 1, &caster);
-            context()->VSSetConstantBuffers(1, 1, occluder.address());
-            context()->VSSetShader(testShaderLibrary->vertexShader({"shadows/shadow_probe.hlsl", "occluder_vs", "vs_5_0", {}}), nullptr, 0);
-            context()->PSSetShader(nullptr, nullptr, 0);
-            context()->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-            context()->IASetInputLayout(nullptr);
-            context()->Draw(6, 0);
-        });
+        drawKnownOccluder(device(), context(), *testShaderLibrary, shadows);
 
         std::vector<VisibilityQuery> queries;
         const glm::dvec3 forward = glm::dvec3(camera.forward());

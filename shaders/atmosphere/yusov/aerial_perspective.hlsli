@@ -20,11 +20,12 @@ bool clipRayToAtmosphere(AtmosphereConstants a, inout float3 start, float3 viewD
     return true;
 }
 
-// Transmittance between two points of one view ray, from the net density table: the density
-// to the top from the nearer point minus that from the farther, along the ray where it rises
-// and against it where it falls (then the farther point sees the nearer one on its way up).
-float3 transmittanceBetween(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 from, float3 to,
-                            float3 viewDir) {
+// The net density (Rayleigh, Mie, ozone) between two points of one view ray, from the net
+// density table: the density to the top from the nearer point minus that from the farther,
+// along the ray where it rises and against it where it falls (then the farther point sees the
+// nearer one on its way up).
+float3 netDensityBetween(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 from, float3 to,
+                         float3 viewDir) {
     float fromRadius = length(from), toRadius = length(to);
     float fromH = fromRadius - a.earth.x, toH = toRadius - a.earth.x;
     float3 netDensity;
@@ -35,7 +36,13 @@ float3 transmittanceBetween(AtmosphereConstants a, Texture2D<float4> netDensityL
         netDensity = netDensityToTop(a, netDensityLut, linearClamp, toH, -dot(to / toRadius, viewDir)) -
                      netDensityToTop(a, netDensityLut, linearClamp, fromH, -dot(from / fromRadius, viewDir));
     }
-    return exp(-opticalDepth(a, max(netDensity, 0.0)));
+    return max(netDensity, 0.0);
+}
+
+// Transmittance between two points of one view ray: exp(-optical depth of their net density).
+float3 transmittanceBetween(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 from, float3 to,
+                            float3 viewDir) {
+    return exp(-opticalDepth(a, netDensityBetween(a, netDensityLut, linearClamp, from, to, viewDir)));
 }
 
 #endif

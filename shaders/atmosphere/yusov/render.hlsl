@@ -6,7 +6,9 @@
 //    scattered in between, L(C, v) - T(C -> P) L(P, v) (eq. 8). The light shafts replace it.
 // Single scattering comes from the table, from numerical integration along the ray (the
 // reference the table is measured against), or not at all; the higher orders from the
-// high-order table (unoccluded), or everything from the multiple scattering table (occluded).
+// high-order table. Without light shafts nothing is occluded, so Occluded differs from
+// Unoccluded only with single scattering from the table: then the multiple scattering table
+// gives all orders in one look-up (docs/atmosphere.md, "Render modes").
 #include "common/fullscreen_triangle.hlsli"
 #include "atmosphere/yusov/aerial_perspective.hlsli"
 
@@ -31,7 +33,8 @@ SamplerState linearClamp : register(s0);
 static const uint kSingleScatteringNone = 0;
 static const uint kSingleScatteringIntegration = 1;
 static const uint kMultipleScatteringNone = 0;
-static const uint kMultipleScatteringOccluded = 1;  // the multiple table alone, single scattering included
+static const uint kSingleScatteringTable = 2;
+static const uint kMultipleScatteringOccluded = 1;
 
 FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
     return fullscreenTriangle(vertexId);
@@ -50,12 +53,12 @@ float3 tableBetween(Texture3D<float4> lut, float3 start, float3 viewDir, float3 
 // In-scattered light per unit irradiance along start -> start + length viewDir: single
 // scattering as its mode says, and the higher orders as theirs.
 float3 inscattering(float3 start, float3 viewDir, float3 sunDir, float rayLength, bool hitsGround, bool toEnd) {
-    if (scattering.mode.z == kMultipleScatteringOccluded)
+    if (scattering.mode.z == kMultipleScatteringOccluded && scattering.mode.x == kSingleScatteringTable)
         return tableBetween(multipleScatteringLut, start, viewDir, sunDir, rayLength, hitsGround, toEnd);
     float3 light = 0.0;
     if (scattering.mode.x == kSingleScatteringIntegration)
         light = integrateSingleScattering(atmosphere, netDensityLut, linearClamp, start, viewDir, sunDir, rayLength, (int)scattering.mode.y);
-    else if (scattering.mode.x != kSingleScatteringNone)
+    else if (scattering.mode.x == kSingleScatteringTable)
         light = tableBetween(singleScatteringLut, start, viewDir, sunDir, rayLength, hitsGround, toEnd);
     if (scattering.mode.z != kMultipleScatteringNone)
         light += tableBetween(highOrderScatteringLut, start, viewDir, sunDir, rayLength, hitsGround, toEnd);

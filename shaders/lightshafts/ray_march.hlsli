@@ -1,0 +1,172 @@
+#ifndef FIRMAMENT_LIGHTSHAFTS_RAY_MARCH_HLSLI
+#define FIRMAMENT_LIGHTSHAFTS_RAY_MARCH_HLSLI
+// The light scattered along a view ray where the sun reaches it (Yusov 2013, "Light shafts
+// calculation using scattering look-up table"; Yusov's GPU Pro 5 chapter). The ray is marched
+// through the shadow cascades one shadow-map texel at a time; the sun's visibility at each step
+// gives, by the render modes (docs/atmosphere.md, "Render modes"):
+//  - Integration: single scattering summed over the steps, each weighted by its visibility;
+//  - a table (LUT, or the higher orders when occluded): the total lit length D_lit and the
+//    distance D_start to the first lit point, and eq. 8 over [D_start, D_start + D_lit]
+//    (two look-ups on one side of the horizon);
+//  - unoccluded higher orders: eq. 8 over the whole ray, shadows or not.
+// The stretch before the first marched cascade and the one beyond the last (or beyond the
+// shafts' end, 300 km) count as lit: Integration integrates them with the spaced quadrature of
+// single_scattering.hlsli, the tables take eq. 8 over each.
+//
+// The includer declares: cbuffers `atmosphere` (AtmosphereConstants), `lightShafts`
+// (LightShaftConstants) and `shadows` (ShadowConstants); Texture2D<float4> netDensityLut;
+// Texture3D<float4> singleScatteringLut, highOrderScatteringLut, multipleScatteringLut;
+// Texture2D<float> shadowMap; SamplerState linearClamp; SamplerComparisonState shadowComparison.
+#include "atmosphere/yusov/aerial_perspective.hlsli"
+#include "lightshafts/lightshaft_structures.hlsli"
+#include "shadows/cascade_sampling.hlsli"
+
+static const uint kShaftSingleNone = 0;
+static const uint kShaftSingleIntegration = 1;
+static const uint kShaftSingleTable = 2;
+static const uint kShaftMultipleNone = 0;
+static const uint kShaftMultipleOccluded = 1;
+static const uint kShaftMultipleUnoccluded = 2;
+
+static const uint kNoTable = 0;
+static const uint kSingleTable = 1;
+static const uint kHighOrderTable = 2;
+static const uint kMultipleTable = 3;
+
+// A view ray's part inside the atmosphere. Distances s along it count from `start`.
+struct ViewRay {
+    float3 camera;        // the camera, in world space (for the shadow maps)
+    float3 start;         // where the ray enters the atmosphere (the camera inside it), from the Earth's centre
+    float3 viewDir;
+    float offset;         // from the camera to start
+    float length;         // from start to the ray's end: geometry, the ground or the top
+    bool hitsGround;      // the side of the horizon every table look-up uses
+    bool endsAtBoundary;  // no geometry: nothing is scattered beyond the end (L there is 0)
+};
+
+float3 lookUpTable(uint table, float3 position, float3 viewDir, float3 sunDir, int side) {
+    if (table == kSingleTable) return lookUpScattering(atmosphere, singleScatteringLut, linearClamp, position, viewDir, sunDir, side);
+    if (table == kHighOrderTable) return lookUpScattering(atmosphere, highOrderScatteringLut, linearClamp, position, viewDir, sunDir, side);
+    return lookUpScattering(atmosphere, multipleScatteringLut, linearClamp, position, viewDir, sunDir, side);
+}
+
+float3 transmittanceTo(ViewRay ray, float s) {
+    return s > 0.0 ? transmittanceBetween(atmosphere, netDensityLut, linearClamp, ray.start, ray.start + ray.viewDir * s, ray.viewDir) : 1.0;
+}
+
+// Eq. 8 over [s0, s1]: T(start -> s0) L(s0, v) - T(start -> s1) L(s1, v), from one table.
+float3 tableSection(uint table, ViewRay ray, float3 sunDir, float s0, float s1) {
+    if (table == kNoTable || s1 <= s0) return 0.0;
+    int side = ray.hitsGround ? kBelowHorizon : kAboveHorizon;
+    float3 light = transmittanceTo(ray, s0) * lookUpTable(table, ray.start + ray.viewDir * s0, ray.viewDir, sunDir, side);
+    if (!(ray.endsAtBoundary && s1 >= ray.length))
+        light -= transmittanceTo(ray, s1) * lookUpTable(table, ray.start + ray.viewDir * s1, ray.viewDir, sunDir, side);
+    return max(light, 0.0);
+}
+
+// Single scattering over [s0, s1], unshadowed, by the spaced quadrature, seen from the start.
+float3 integratedSection(ViewRay ray, float3 sunDir, float s0, float s1, int steps) {
+    if (s1 <= s0) return 0.0;
+    float3 from = ray.start + ray.viewDir * s0;
+    return transmittanceTo(ray, s0) *
+           integrateSingleScattering(atmosphere, netDensityLut, linearClamp, from, ray.viewDir, sunDir, s1 - s0, steps);
+}
+
+// What the march through the cascades found.
+struct ShadowMarch {
+    float begin, end;        // the marched stretch [begin, end] of the ray (equal when nothing was marched)
+    float litLength;         // D_lit: the lit length within it (visibility-weighted)
+    float firstLit;          // D_start: where the first lit step begins (end when none is lit)
+    float3 singleScattering; // Integration: single scattering over the stretch, lit steps only
+};
+
+// The sun's visibility at a point of cascade c's tile (u, v, depth): 1 outside the tile.
+float cascadeVisibility(uint c, float3 uvz) {
+    if (any(uvz.xy < 0.0) || any(uvz.xy > 1.0) || uvz.z < 0.0 || uvz.z > 1.0) return 1.0;
+    return shadowMap.SampleCmpLevelZero(shadowComparison, atlasCoordinates(c, uvz.xy), uvz.z - shadows.map.z);
+}
+
+// Marches the ray through the cascades from the first to march to the last, or to the shafts'
+// end: each cascade's part of the ray (by the view depths of its split) in steps of one texel
+// of that cascade, at most lightShafts.march.y; the visibility is taken at each step's middle.
+// With `integrate`, single scattering is summed too (midpoint rule, the optical depth from the
+// start carried along).
+ShadowMarch marchShadows(ViewRay ray, float3 sunDir, bool integrate) {
+    ShadowMarch m;
+    m.begin = 0.0;
+    m.end = 0.0;
+    m.litLength = 0.0;
+    m.firstLit = 0.0;
+    m.singleScattering = 0.0;
+    uint count = shadows.mode.x;
+    uint first = lightShafts.mode.w;
+    float cosForward = dot(ray.viewDir, shadows.cameraForward.xyz);
+    if (count == 0 || first >= count || cosForward <= 1e-4) return m;
+    float reach = min(lightShafts.march.x, cascadeSplit(count) / cosForward) - ray.offset;
+    m.begin = clamp(cascadeSplit(first) / cosForward - ray.offset, 0.0, ray.length);
+    m.end = clamp(reach, m.begin, ray.length);
+    m.firstLit = m.end;
+    if (m.end <= m.begin) return m;
+
+    float cosTheta = dot(ray.viewDir, sunDir);
+    float3 netDensity = integrate ? netDensityBetween(atmosphere, netDensityLut, linearClamp, ray.start, ray.start + ray.viewDir * m.begin,
+                                                      ray.viewDir)
+                                  : 0.0;
+    bool foundLit = false;
+    [loop] for (uint c = first; c < count; ++c) {
+        float s0 = max(cascadeSplit(c) / cosForward - ray.offset, m.begin);
+        float s1 = min(cascadeSplit(c + 1) / cosForward - ray.offset, m.end);
+        if (s1 <= s0) continue;
+        float3 uvz0 = shadowMapCoordinates(c, ray.camera + ray.viewDir * (ray.offset + s0));
+        float3 uvz1 = shadowMapCoordinates(c, ray.camera + ray.viewDir * (ray.offset + s1));
+        float texels = length(uvz1.xy - uvz0.xy) * shadows.map.x;
+        uint steps = (uint)clamp(ceil(texels), integrate ? 8.0 : 1.0, lightShafts.march.y);
+        float ds = (s1 - s0) / steps;
+        [loop] for (uint i = 0; i < steps; ++i) {
+            float t = (i + 0.5) / steps;
+            float visibility = cascadeVisibility(c, lerp(uvz0, uvz1, t));
+            if (!foundLit && visibility > 0.0) {
+                foundLit = true;
+                m.firstLit = s0 + i * ds;
+            }
+            m.litLength += visibility * ds;
+            if (integrate) {
+                float3 position = ray.start + ray.viewDir * (s0 + t * (s1 - s0));
+                float radius = length(position);
+                float h = radius - atmosphere.earth.x;
+                float3 density = particleDensity(atmosphere, h);
+                netDensity += density * (0.5 * ds);
+                m.singleScattering += scatteringCoefficient(atmosphere, density, cosTheta) * exp(-opticalDepth(atmosphere, netDensity)) *
+                                      sunTransmittance(atmosphere, netDensityLut, linearClamp, h, dot(position / radius, sunDir)) *
+                                      (visibility * ds);
+                netDensity += density * (0.5 * ds);
+            }
+        }
+    }
+    return m;
+}
+
+// The table eq. 8 reads over the lit parts of the ray, by the render modes.
+uint litTable(uint single, uint multiple) {
+    if (single == kShaftSingleTable) return multiple == kShaftMultipleOccluded ? kMultipleTable : kSingleTable;
+    return multiple == kShaftMultipleOccluded ? kHighOrderTable : kNoTable;
+}
+
+// The light scattered into the ray where the sun reaches, per unit sun irradiance.
+float3 shadowedInscattering(ViewRay ray, float3 sunDir) {
+    uint single = lightShafts.mode.x, multiple = lightShafts.mode.z;
+    int steps = (int)lightShafts.mode.y;
+    bool integrate = single == kShaftSingleIntegration;
+    ShadowMarch m = marchShadows(ray, sunDir, integrate);
+    float3 light = 0.0;
+    if (integrate)
+        light += integratedSection(ray, sunDir, 0.0, m.begin, steps) + m.singleScattering +
+                 integratedSection(ray, sunDir, m.end, ray.length, steps);
+    uint table = litTable(single, multiple);
+    light += tableSection(table, ray, sunDir, 0.0, m.begin) + tableSection(table, ray, sunDir, m.firstLit, m.firstLit + m.litLength) +
+             tableSection(table, ray, sunDir, m.end, ray.length);
+    if (multiple == kShaftMultipleUnoccluded) light += tableSection(kHighOrderTable, ray, sunDir, 0.0, ray.length);
+    return light;
+}
+
+#endif

@@ -1,0 +1,132 @@
+// The light shafts from outside, in the captured EXR (radiance before tone mapping):
+//  - with no shadow caster (terrain off) nothing is occluded, so the brute-force pass must
+//    draw what the atmosphere's own Sky and Aerial perspective passes draw, in every render
+//    mode: the pass's plumbing (unmarched stretches, eq. 8, the sun's disc) adds nothing;
+//  - over the mountains at sunrise the shafts take light out of the haze in the peaks'
+//    shadows, and never add any;
+//  - "Lighting only" removes the scene and keeps the scattered light;
+//  - without shafts, single scattering None with higher orders Occluded draws the same light as
+//    with them Unoccluded (the whole ray is lit), not single scattering (docs/atmosphere.md).
+#include "core/ExrImage.h"
+#include "support/Process.h"
+#include "support/TestPaths.h"
+
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace firmament::test {
+namespace {
+
+constexpr int kWidth = 96, kHeight = 54;
+
+std::vector<float> capture(const std::string& name, std::vector<std::wstring> settings) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-light-shafts";
+    std::filesystem::create_directories(folder);
+    std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight)};
+    for (const std::wstring& s : settings) args.insert(args.end(), {L"--set", s});
+    args.insert(args.end(), {L"--capture", (folder / (name + ".png")).wstring()});
+    const ProcessResult run = runProcess(firmamentExe(), args);
+    EXPECT_EQ(run.exitCode, 0u) << run.output;
+    if (run.exitCode != 0) return {};
+    const ExrFile file = readExr(folder / (name + ".exr"));
+    std::vector<float> rgb;
+    for (size_t i = 0; i < static_cast<size_t>(kWidth) * kHeight; ++i)
+        for (int c = 0; c < 3; ++c) {
+            Imath::half h;
+            h.setBits(file.image.halfBits[i * 4 + c]);
+            rgb.push_back(static_cast<float>(h));
+        }
+    return rgb;
+}
+
+// The largest difference between two frames, relative to the brighter value (above a floor).
+double largestRelativeDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    double worst = 0.0;
+    for (size_t i = 0; i < a.size(); ++i)
+        worst = std::max(worst, std::abs(static_cast<double>(a[i]) - b[i]) / std::max({static_cast<double>(a[i]), static_cast<double>(b[i]), 1e-3}));
+    return worst;
+}
+
+// The orientation grid's ground (the Earth's sphere, with depth) and the sky, no terrain: no
+// shadow caster, so the cascades are off.
+const std::vector<std::wstring> kNoCasters{L"terrain.enabled=off", L"camera.position=0,1500,0", L"camera.pitch=-5", L"sun.elevation=12",
+                                           L"sun.azimuth=10"};
+
+TEST(LightShaftCapture, WithoutCastersTheBruteForcePassDrawsTheAtmosphere) {
+    const std::pair<const wchar_t*, const wchar_t*> modes[] = {
+        {L"LUT", L"Unoccluded"}, {L"LUT", L"Occluded"}, {L"Integration", L"None"}, {L"Integration", L"Occluded"}, {L"None", L"Unoccluded"}};
+    for (const auto& [single, multiple] : modes) {
+        std::vector<std::wstring> settings = kNoCasters;
+        settings.push_back(std::wstring(L"atmosphere.singleScattering=") + single);
+        settings.push_back(std::wstring(L"atmosphere.multipleScattering=") + multiple);
+        const std::vector<float> plain = capture("plain", settings);
+        settings.push_back(L"lightShafts.enabled=on");
+        const std::vector<float> shafts = capture("shafts", settings);
+        ASSERT_EQ(plain.size(), shafts.size());
+        const double difference = largestRelativeDifference(plain, shafts);
+        std::printf("SS %ls + MS %ls: largest relative difference %.2e\n", single, multiple, difference);
+        EXPECT_LT(difference, 1e-3) << "SS " << std::string(single, single + std::wcslen(single)) << " + MS "
+                                    << std::string(multiple, multiple + std::wcslen(multiple));
+    }
+}
+
+// Sunrise over the mountains, looking towards the sun: the peaks' shadows cross the haze.
+const std::vector<std::wstring> kSunrise{L"camera.position=0,3200,0", L"camera.yaw=100", L"camera.pitch=-4", L"sun.elevation=5",
+                                         L"sun.azimuth=100"};
+
+TEST(LightShaftCapture, ShaftsTakeLightOutOfTheHazeInTheMountainsShadows) {
+    // The scattered light alone, marched from the first cascade on, and with nothing marched
+    // (the first cascade to march beyond the four there are): the second is unshadowed.
+    std::vector<std::wstring> settings = kSunrise;
+    settings.insert(settings.end(), {L"lightShafts.enabled=on", L"lightShafts.lightingOnly=on"});
+    const std::vector<float> shadowed = capture("shadowed-light", settings);
+    settings.push_back(L"lightShafts.firstCascade=7");
+    const std::vector<float> unshadowed = capture("unshadowed-light", settings);
+    ASSERT_EQ(unshadowed.size(), shadowed.size());
+    ASSERT_FALSE(shadowed.empty());
+    int darker = 0;
+    const size_t pixels = shadowed.size() / 3;
+    for (size_t i = 0; i < shadowed.size(); ++i) {
+        EXPECT_LE(shadowed[i], unshadowed[i] * 1.001f + 1e-6f) << "component " << i << ": a shadow adds light";
+        if (i % 3 == 1 && shadowed[i] < 0.8f * unshadowed[i]) ++darker;
+    }
+    std::printf("%d of %zu pixels lose more than 20%% of their scattered light to the shadows\n", darker, pixels);
+    EXPECT_GT(darker, static_cast<int>(pixels / 20)) << "the mountains' shadows should cross the haze";
+}
+
+TEST(LightShaftCapture, LightingOnlyShowsTheScatteredLightAlone) {
+    std::vector<std::wstring> settings = kSunrise;
+    settings.push_back(L"lightShafts.enabled=on");
+    const std::vector<float> full = capture("full", settings);
+    settings.push_back(L"lightShafts.lightingOnly=on");
+    const std::vector<float> light = capture("light-only", settings);
+    ASSERT_EQ(full.size(), light.size());
+    ASSERT_FALSE(full.empty());
+    int dimmer = 0;
+    for (size_t i = 0; i < full.size(); ++i) {
+        EXPECT_LE(light[i], full[i] * 1.001f + 1e-6f) << "component " << i << ": lighting only adds light";
+        dimmer += light[i] < 0.99f * full[i];
+    }
+    EXPECT_GT(dimmer, static_cast<int>(full.size() / 4)) << "the terrain's own radiance should be gone";
+}
+
+TEST(LightShaftCapture, SingleScatteringNoneShowsNoSingleScattering) {
+    std::vector<std::wstring> settings = kNoCasters;
+    settings.push_back(L"atmosphere.singleScattering=None");
+    settings.push_back(L"atmosphere.multipleScattering=Occluded");
+    const std::vector<float> occluded = capture("none-occluded", settings);
+    settings.back() = L"atmosphere.multipleScattering=Unoccluded";
+    const std::vector<float> unoccluded = capture("none-unoccluded", settings);
+    ASSERT_EQ(occluded.size(), unoccluded.size());
+    ASSERT_FALSE(occluded.empty());
+    EXPECT_LT(largestRelativeDifference(occluded, unoccluded), 1e-3) << "without shafts the whole ray is lit: the same high orders";
+}
+
+}  // namespace
+}  // namespace firmament::test
