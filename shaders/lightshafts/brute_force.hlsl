@@ -26,6 +26,13 @@ SamplerComparisonState shadowComparison : register(s1);
 
 #include "lightshafts/ray_march.hlsli"
 
+// Only where the sun reaches.
+float3 scatteredLight(ViewRay ray, float3 sunDir) {
+    return shadowedInscattering(ray, sunDir);
+}
+
+#include "atmosphere/yusov/shade_pixel.hlsli"
+
 FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
     return fullscreenTriangle(vertexId);
 }
@@ -33,43 +40,7 @@ FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
 float4 ps_main(FullscreenVertex input) : SV_Target {
     int2 pixel = int2(input.position.xy);
     float depth = sceneDepth.Load(int3(pixel, 0));
-    bool geometry = depth > 0.0;  // reversed Z: 0 is the far plane, where nothing was drawn
     bool lightingOnly = lightShafts.options.x != 0;
-    float3 radiance = geometry && !lightingOnly ? sceneRadiance.Load(int3(pixel, 0)).rgb : 0.0;
-    float2 ndc = float2(input.uv.x * 2.0 - 1.0, 1.0 - input.uv.y * 2.0);
-    float4 farPoint = mul(frame.clipToDirection, float4(ndc, 1.0, 1.0));
-    float3 viewDir = normalize(farPoint.xyz / farPoint.w);
-    float3 sunDir = frame.directionToSun.xyz;
-    float3 earthCentre = float3(0.0, -atmosphere.earth.x, 0.0);
-
-    ViewRay ray;
-    ray.camera = frame.cameraPosition.xyz;
-    ray.start = frame.cameraPosition.xyz - earthCentre;
-    ray.viewDir = viewDir;
-    bool inAtmosphere = clipRayToAtmosphere(atmosphere, ray.start, viewDir, ray.offset);
-    float geometryDistance = 0.0;
-    if (geometry) {
-        float4 world = mul(frame.inverseViewProjection, float4(ndc, depth, 1.0));
-        geometryDistance = length(world.xyz / world.w - frame.cameraPosition.xyz) - ray.offset;
-    }
-    bool sunHere = !geometry && !lightingOnly && dot(viewDir, sunDir) > lightShafts.sun.x;
-    if (!inAtmosphere || (geometry && geometryDistance <= 0.0)) {
-        // Outside the atmosphere: geometry and the sun as they are, space is black.
-        bool sunSeen = sunHere && !rayHitsGround(atmosphere, frame.cameraPosition.xyz - earthCentre, viewDir);
-        return float4(geometry ? radiance : (sunSeen ? frame.sunIrradiance.rgb * lightShafts.sun.y : 0.0), 1.0);
-    }
-    ray.hitsGround = rayHitsGround(atmosphere, ray.start, viewDir);
-    float toEnd = rayLengthInAtmosphere(atmosphere, ray.start, viewDir, ray.hitsGround);
-    // Geometry on the ground lies where the ray meets the Earth: clamped to the ray's end.
-    ray.length = geometry ? min(geometryDistance, toEnd) : toEnd;
-    ray.endsAtBoundary = !geometry;
-
-    float3 light = frame.sunIrradiance.rgb * shadowedInscattering(ray, sunDir);
-    if (geometry) return float4(radiance * transmittanceTo(ray, ray.length) + light, 1.0);
-    if (sunHere && !ray.hitsGround) {
-        float h = length(ray.start) - atmosphere.earth.x;
-        light += frame.sunIrradiance.rgb * lightShafts.sun.y *
-                 sunTransmittance(atmosphere, netDensityLut, linearClamp, h, dot(normalize(ray.start), viewDir));
-    }
-    return float4(light, 1.0);
+    float3 radiance = depth > 0.0 && !lightingOnly ? sceneRadiance.Load(int3(pixel, 0)).rgb : 0.0;
+    return float4(shadePixel(input.uv, depth, radiance, !lightingOnly, lightShafts.sun.xy), 1.0);
 }

@@ -17,60 +17,9 @@
 // (LightShaftConstants) and `shadows` (ShadowConstants); Texture2D<float4> netDensityLut;
 // Texture3D<float4> singleScatteringLut, highOrderScatteringLut, multipleScatteringLut;
 // Texture2D<float> shadowMap; SamplerState linearClamp; SamplerComparisonState shadowComparison.
-#include "atmosphere/yusov/aerial_perspective.hlsli"
+#include "atmosphere/yusov/view_ray.hlsli"
 #include "lightshafts/lightshaft_structures.hlsli"
 #include "shadows/cascade_sampling.hlsli"
-
-static const uint kShaftSingleNone = 0;
-static const uint kShaftSingleIntegration = 1;
-static const uint kShaftSingleTable = 2;
-static const uint kShaftMultipleNone = 0;
-static const uint kShaftMultipleOccluded = 1;
-static const uint kShaftMultipleUnoccluded = 2;
-
-static const uint kNoTable = 0;
-static const uint kSingleTable = 1;
-static const uint kHighOrderTable = 2;
-static const uint kMultipleTable = 3;
-
-// A view ray's part inside the atmosphere. Distances s along it count from `start`.
-struct ViewRay {
-    float3 camera;        // the camera, in world space (for the shadow maps)
-    float3 start;         // where the ray enters the atmosphere (the camera inside it), from the Earth's centre
-    float3 viewDir;
-    float offset;         // from the camera to start
-    float length;         // from start to the ray's end: geometry, the ground or the top
-    bool hitsGround;      // the side of the horizon every table look-up uses
-    bool endsAtBoundary;  // no geometry: nothing is scattered beyond the end (L there is 0)
-};
-
-float3 lookUpTable(uint table, float3 position, float3 viewDir, float3 sunDir, int side) {
-    if (table == kSingleTable) return lookUpScattering(atmosphere, singleScatteringLut, linearClamp, position, viewDir, sunDir, side);
-    if (table == kHighOrderTable) return lookUpScattering(atmosphere, highOrderScatteringLut, linearClamp, position, viewDir, sunDir, side);
-    return lookUpScattering(atmosphere, multipleScatteringLut, linearClamp, position, viewDir, sunDir, side);
-}
-
-float3 transmittanceTo(ViewRay ray, float s) {
-    return s > 0.0 ? transmittanceBetween(atmosphere, netDensityLut, linearClamp, ray.start, ray.start + ray.viewDir * s, ray.viewDir) : 1.0;
-}
-
-// Eq. 8 over [s0, s1]: T(start -> s0) L(s0, v) - T(start -> s1) L(s1, v), from one table.
-float3 tableSection(uint table, ViewRay ray, float3 sunDir, float s0, float s1) {
-    if (table == kNoTable || s1 <= s0) return 0.0;
-    int side = ray.hitsGround ? kBelowHorizon : kAboveHorizon;
-    float3 light = transmittanceTo(ray, s0) * lookUpTable(table, ray.start + ray.viewDir * s0, ray.viewDir, sunDir, side);
-    if (!(ray.endsAtBoundary && s1 >= ray.length))
-        light -= transmittanceTo(ray, s1) * lookUpTable(table, ray.start + ray.viewDir * s1, ray.viewDir, sunDir, side);
-    return max(light, 0.0);
-}
-
-// Single scattering over [s0, s1], unshadowed, by the spaced quadrature, seen from the start.
-float3 integratedSection(ViewRay ray, float3 sunDir, float s0, float s1, int steps) {
-    if (s1 <= s0) return 0.0;
-    float3 from = ray.start + ray.viewDir * s0;
-    return transmittanceTo(ray, s0) *
-           integrateSingleScattering(atmosphere, netDensityLut, linearClamp, from, ray.viewDir, sunDir, s1 - s0, steps);
-}
 
 // What the march through the cascades found.
 struct ShadowMarch {
@@ -146,17 +95,11 @@ ShadowMarch marchShadows(ViewRay ray, float3 sunDir, bool integrate) {
     return m;
 }
 
-// The table eq. 8 reads over the lit parts of the ray, by the render modes.
-uint litTable(uint single, uint multiple) {
-    if (single == kShaftSingleTable) return multiple == kShaftMultipleOccluded ? kMultipleTable : kSingleTable;
-    return multiple == kShaftMultipleOccluded ? kHighOrderTable : kNoTable;
-}
-
 // The light scattered into the ray where the sun reaches, per unit sun irradiance.
 float3 shadowedInscattering(ViewRay ray, float3 sunDir) {
     uint single = lightShafts.mode.x, multiple = lightShafts.mode.z;
     int steps = (int)lightShafts.mode.y;
-    bool integrate = single == kShaftSingleIntegration;
+    bool integrate = single == kSingleScatteringIntegration;
     ShadowMarch m = marchShadows(ray, sunDir, integrate);
     float3 light = 0.0;
     if (integrate)
@@ -165,7 +108,7 @@ float3 shadowedInscattering(ViewRay ray, float3 sunDir) {
     uint table = litTable(single, multiple);
     light += tableSection(table, ray, sunDir, 0.0, m.begin) + tableSection(table, ray, sunDir, m.firstLit, m.firstLit + m.litLength) +
              tableSection(table, ray, sunDir, m.end, ray.length);
-    if (multiple == kShaftMultipleUnoccluded) light += tableSection(kHighOrderTable, ray, sunDir, 0.0, ray.length);
+    if (multiple == kMultipleScatteringUnoccluded) light += tableSection(kHighOrderTable, ray, sunDir, 0.0, ray.length);
     return light;
 }
 
