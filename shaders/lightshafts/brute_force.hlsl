@@ -26,9 +26,9 @@ SamplerComparisonState shadowComparison : register(s1);
 
 #include "lightshafts/ray_march.hlsli"
 
-// Only where the sun reaches.
+// Only where the sun reaches, times the scattering scale.
 float3 scatteredLight(ViewRay ray, float3 sunDir) {
-    return shadowedInscattering(ray, sunDir);
+    return shadowedInscattering(ray, sunDir) * lightShafts.march.z;
 }
 
 #include "atmosphere/yusov/shade_pixel.hlsli"

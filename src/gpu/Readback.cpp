@@ -18,6 +18,8 @@ int bytesPerPixel(DXGI_FORMAT format) {
         case DXGI_FORMAT_B8G8R8A8_UNORM:
         case DXGI_FORMAT_R32_FLOAT:
         case DXGI_FORMAT_R32_UINT:
+        case DXGI_FORMAT_R16G16_UINT:
+        case DXGI_FORMAT_R16G16_UNORM:
         case DXGI_FORMAT_R32_TYPELESS: return 4;
         case DXGI_FORMAT_R16G16B16A16_FLOAT:
         case DXGI_FORMAT_R32G32_FLOAT: return 8;

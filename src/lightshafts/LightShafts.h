@@ -4,10 +4,12 @@
 // cascaded shadow maps (Yusov 2013; Yusov's GPU Pro 5 chapter). It replaces the atmosphere's
 // Sky and Aerial perspective passes when it is on, and reads Yusov's tables through the
 // atmosphere's hand-off (ScatteringLookup) and the cascades through theirs (ShadowInputs).
-// So far: the brute-force reference, one ray march per pixel ("Light shafts (brute force)").
+// Two techniques ("Scattering technique"): epipolar sampling (EpipolarSampling), and the
+// brute-force reference, one ray march per pixel ("Light shafts (brute force)").
 #include "atmosphere/ScatteringLookup.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/FullscreenPass.h"
+#include "lightshafts/EpipolarSampling.h"
 #include "lightshafts/LightShaftSettings.h"
 #include "lightshafts/LightShaftStructures.h"
 #include "render/FrameContext.h"
@@ -31,6 +33,9 @@ public:
     static gpu::LightShaftConstants constants(const LightShaftSettings& settings, const ScatteringLookup& lookup, int cascadeResolution);
 
 private:
+    void renderBruteForce(FrameContext& frame, const ScatteringLookup& lookup, const ShadowInputs& shadows, ID3D11Buffer* shadowConstants);
+
+    EpipolarSampling epipolar_;
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::LightShaftConstants> constants_;
     ConstantBuffer<gpu::ShadowConstants> noShadows_;  // bound when the cascades are off: mode.x == 0

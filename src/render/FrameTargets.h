@@ -16,7 +16,7 @@ public:
     // Copies the HDR frame as it is now into sceneCopy() and returns it.
     const Texture2D& copyHdr(ID3D11DeviceContext* context);
 
-    const Texture2D& hdr() const { return hdr_; }          // RGBA16F linear radiance
+    const Texture2D& hdr() const { return hdr_; }          // RGBA16F linear radiance (also a compute target)
     const Texture2D& depth() const { return depth_; }      // D32 reversed Z (1 near, 0 far, cleared to 0)
     const Texture2D& sceneCopy() const { return sceneCopy_; }
     const Texture2D& output() const { return output_; }    // 8-bit, sRGB-encoded (the swap chain's format); empty with a swap chain

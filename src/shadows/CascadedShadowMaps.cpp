@@ -106,7 +106,8 @@ void CascadedShadowMaps::render(ID3D11DeviceContext* context, const std::functio
 }
 
 ShadowInputs CascadedShadowMaps::inputs() const {
-    return {constantBuffer_.get(), cascades_.empty() ? nullptr : srv_.Get(), comparison_.Get(), cascades_.empty() ? 0 : resolution_};
+    return {constantBuffer_.get(), cascades_.empty() ? nullptr : srv_.Get(), comparison_.Get(), cascades_.empty() ? 0 : resolution_,
+            static_cast<int>(cascades_.size())};
 }
 
 }  // namespace firmament

@@ -9,6 +9,7 @@ struct ShadowInputs {
     ID3D11ShaderResourceView* map = nullptr;     // Texture2D<float>: the cascades' atlas (t4)
     ID3D11SamplerState* comparison = nullptr;    // LESS_EQUAL, bilinear (s2)
     int resolution = 0;                          // texels along a cascade's side
+    int cascades = 0;                            // how many were drawn
 };
 
 }  // namespace firmament

@@ -3,7 +3,7 @@
 // technique runs on them give exactly what they give on the pre-computation's own tables; and
 // GroundLighting gives the ground one region per model drawn, with the columns each lights.
 #include "AtmosphereQueries.h"
-#include "WarpDevice.h"
+#include "FrameTest.h"
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/SunDisc.h"
 #include "core/Camera.h"
@@ -19,13 +19,11 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 32;
 
-class AtmosphereHandOff : public WarpDevice {
+class AtmosphereHandOff : public FrameTest {
 protected:
     void SetUp() override {
-        WarpDevice::SetUp();
-        frameConstants = std::make_unique<ConstantBuffer<gpu::FrameConstants>>(device());
-        profiler = std::make_unique<GpuProfiler>(device(), context());
-        targets.resize(device(), kWidth, kHeight, true);
+        FrameTest::SetUp();
+        setUpFrame(kWidth, kHeight);
     }
 
     // A frame context whose work finishes at once; nothing is drawn with it here.
@@ -41,9 +39,6 @@ protected:
         return s;
     }
 
-    std::unique_ptr<ConstantBuffer<gpu::FrameConstants>> frameConstants;
-    std::unique_ptr<GpuProfiler> profiler;
-    FrameTargets targets;
     gpu::FrameConstants constants{};
     Camera camera;
     Sun sun;

@@ -6,7 +6,7 @@
 // the in-scattering integrated over the lit steps must equal the reference atmosphere's
 // integral over the lit parts of the ray.
 #include "KnownOccluder.h"
-#include "WarpDevice.h"
+#include "FrameTest.h"
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/AtmosphereParameters.h"
 #include "atmosphere/ReferenceAtmosphere.h"
@@ -62,13 +62,11 @@ glm::dvec2 shadowInterval(glm::dvec3 c, glm::dvec3 v, double length, glm::dvec3 
     return {lower, std::max(upper, lower)};
 }
 
-class LightShaftMarch : public WarpDevice {
+class LightShaftMarch : public FrameTest {
 protected:
     void SetUp() override {
-        WarpDevice::SetUp();
-        frameConstants = std::make_unique<ConstantBuffer<gpu::FrameConstants>>(device());
-        profiler = std::make_unique<GpuProfiler>(device(), context());
-        targets.resize(device(), 64, 32, true);
+        FrameTest::SetUp();
+        setUpFrame(64, 32);
     }
 
     struct Case {
@@ -192,9 +190,6 @@ protected:
         EXPECT_GT(crossing, 60) << c.label << ": too few rays cross the shadow to test it";
     }
 
-    std::unique_ptr<ConstantBuffer<gpu::FrameConstants>> frameConstants;
-    std::unique_ptr<GpuProfiler> profiler;
-    FrameTargets targets;
 };
 
 TEST_F(LightShaftMarch, LitLengthAndInscatteringMatchTheOccludersGeometry) {

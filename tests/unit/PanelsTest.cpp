@@ -47,7 +47,8 @@ TEST(Panels, EveryPanelDrawsInEveryStateWithExistingKeys) {
     for (const Panel panel : {Panel::Basic, Panel::Additional, Panel::ToneMapping, Panel::Performance})
         for (const AtmosphereModel model : {AtmosphereModel::Yusov2013, AtmosphereModel::Bruneton2008})
             for (const ModelComparison comparison : {ModelComparison::None, ModelComparison::Split, ModelComparison::Difference})
-                for (const bool custom : {false, true}) {
+                for (const bool custom : {false, true})
+                    for (const LightShaftTechnique technique : {LightShaftTechnique::Epipolar, LightShaftTechnique::BruteForce}) {
                     State state;
                     state.ui.panel = panel;
                     state.ui.help = custom;
@@ -55,9 +56,20 @@ TEST(Panels, EveryPanelDrawsInEveryStateWithExistingKeys) {
                     state.atmosphere.comparison = comparison;
                     state.atmosphere.customCoefficients = custom;
                     state.toneMapping.autoExposure = !custom;
+                    // The light shafts' controls show while they are on, the epipolar ones with that technique.
+                    state.lightShafts.enabled = custom;
+                    state.lightShafts.technique = technique;
+                    state.lightShafts.initialStep = 200;  // past samples / 8: the panel says what is used
+                    // Past the cascade parts' room: the panel says the single pass is used.
+                    state.lightShafts.cascadeProcessing = CascadeProcessing::Instanced;
+                    if (custom) {
+                        state.lightShafts.slices = 2048;
+                        state.lightShafts.samplesPerSlice = 2048;
+                    }
                     EXPECT_NO_THROW(gui.draw(state)) << "panel " << static_cast<int>(panel) << ", model " << static_cast<int>(model)
-                                                     << ", comparison " << static_cast<int>(comparison) << ", custom " << custom;
-                }
+                                                     << ", comparison " << static_cast<int>(comparison) << ", custom " << custom
+                                                     << ", technique " << static_cast<int>(technique);
+                    }
 }
 
 TEST(Panels, AMissingKeyOrSectionIsAnErrorThatNamesIt) {

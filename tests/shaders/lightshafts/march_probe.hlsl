@@ -44,7 +44,7 @@ ViewRay probeRay(Query q) {
 
 [numthreads(64, 1, 1)]
 void march(uint3 id : SV_DispatchThreadID) {
-    ShadowMarch m = marchShadows(probeRay(queries[id.x]), toSun.xyz, false);
+    ShadowMarch m = marchShadows(probeRay(queries[id.x]), toSun.xyz, false, 0);
     results[id.x] = float4(m.litLength, m.firstLit, m.begin, m.end);
 }
 
