@@ -9,8 +9,9 @@
 //
 // Where the weights fail (sum < 0.01: no sample on either slice at the pixel's depth) the pixel
 // is a depth break: with "Correction at depth breaks" it goes into a list that the next pass
-// ray marches; without, it takes the samples' bilinear blend regardless of depth. "Show depth
-// breaks" paints such pixels magenta.
+// ray marches; without, it takes the light of the one sample among the four whose depth is
+// nearest its own (a ground pixel under the horizon takes a ground sample, not the sky's).
+// "Show depth breaks" paints such pixels magenta.
 #define FIRMAMENT_NO_SHADE_PIXEL 1
 #include "lightshafts/epipolar_inputs.hlsli"
 #include "atmosphere/yusov/shade_pixel.hlsli"
@@ -25,18 +26,24 @@ struct Blend {
     float3 light;
     float3 transmittance;
     float weight;
+    float nearest;          // the smallest relative depth difference of a sample to the pixel
+    float3 nearestLight;    // that sample's light and transmittance
+    float3 nearestTransmittance;
 };
+
+float depthDifference(float z, float zs) {
+    return abs(z - zs) / max(max(z, zs), 1.0);
+}
 
 // Bilateral weight of a sample at camera-space depth zs for a pixel at depth z.
 float depthWeight(float z, float zs) {
     float threshold = epipolar.refinement.x;
-    float difference = abs(z - zs) / max(max(z, zs), 1.0);
-    float w = threshold / max(difference, threshold);
+    float w = threshold / max(depthDifference(z, zs), threshold);
     return w * w * w * w;
 }
 
 // Adds the two samples of `slice` around the pixel's projection on it.
-void addSlice(inout Blend blend, uint slice, float sliceWeight, float2 ndc, float z, bool bilateral) {
+void addSlice(inout Blend blend, uint slice, float sliceWeight, float2 ndc, float z) {
     float4 ends = sliceEnds.Load(int3(slice, 0, 0));
     if (sliceWeight <= 0.0 || !validSlice(ends)) return;
     float2 along = ends.zw - ends.xy;
@@ -50,14 +57,21 @@ void addSlice(inout Blend blend, uint slice, float sliceWeight, float2 ndc, floa
         int3 texel = int3((int)index, (int)slice, 0);
         float4 coordinates = sampleCoordinates.Load(texel);
         if (!validSample(coordinates)) continue;
-        float w = (k == 0 ? 1.0 - f : f) * sliceWeight * (bilateral ? depthWeight(z, coordinates.z) : 1.0);
-        blend.light += w * interpolatedInscattering.Load(texel).rgb;
-        blend.transmittance += w * epipolarExtinction.Load(texel).rgb;
+        float3 light = interpolatedInscattering.Load(texel).rgb, transmittance = epipolarExtinction.Load(texel).rgb;
+        float w = (k == 0 ? 1.0 - f : f) * sliceWeight * depthWeight(z, coordinates.z);
+        blend.light += w * light;
+        blend.transmittance += w * transmittance;
         blend.weight += w;
+        float difference = depthDifference(z, coordinates.z);
+        if (difference < blend.nearest) {
+            blend.nearest = difference;
+            blend.nearestLight = light;
+            blend.nearestTransmittance = transmittance;
+        }
     }
 }
 
-Blend blendSlices(float2 ndc, float z, bool bilateral) {
+Blend blendSlices(float2 ndc, float z) {
     uint slices = epipolar.sampling.x;
     float slice = sliceOf(ndc);
     float before = floor(slice);
@@ -67,8 +81,11 @@ Blend blendSlices(float2 ndc, float z, bool bilateral) {
     blend.light = 0.0;
     blend.transmittance = 0.0;
     blend.weight = 0.0;
-    addSlice(blend, s0, 1.0 - f, ndc, z, bilateral);
-    addSlice(blend, (s0 + 1) % slices, f, ndc, z, bilateral);
+    blend.nearest = 1.0e30;
+    blend.nearestLight = 0.0;
+    blend.nearestTransmittance = 1.0;
+    addSlice(blend, s0, 1.0 - f, ndc, z);
+    addSlice(blend, (s0 + 1) % slices, f, ndc, z);
     return blend;
 }
 
@@ -78,13 +95,17 @@ void main(uint3 id : SV_DispatchThreadID) {
     if (any(pixel >= frame.screen.xy)) return;
     float2 ndc = ndcOf((pixel + 0.5) * frame.screen.zw);
     float z = cameraDepth.Load(int3(id.xy, 0));
-    Blend blend = blendSlices(ndc, z, true);
+    Blend blend = blendSlices(ndc, z);
     bool depthBreak = blend.weight < kMinTotalWeight;
     if (depthBreak && epipolar.options.w != 0) {
         frameOut[id.xy] = float4(frame.sunIrradiance.rgb * float3(1.0, 0.0, 1.0), 1.0);
         return;
     }
-    if (depthBreak && epipolar.options.z == 0) blend = blendSlices(ndc, z, false);
+    if (depthBreak && epipolar.options.z == 0 && blend.nearest < 1.0e30) {
+        blend.light = blend.nearestLight;
+        blend.transmittance = blend.nearestTransmittance;
+        blend.weight = 1.0;
+    }
     if (blend.weight < kMinTotalWeight) {
         // Corrected (or, with no valid sample near at all, marched regardless): the next pass.
         uint slot;

@@ -36,9 +36,7 @@ inline constexpr long long kMaxCascadeParts = 2 * 1024 * 1024;
 inline constexpr std::array<std::string_view, 7> kSliceCountNames{"32", "64", "128", "256", "512", "1024", "2048"};
 
 struct LightShaftSettings {
-    // "Enable light shafts". Off by default until the min/max trees land and the epipolar path's
-    // cost on the CPU device is measured (docs/lightshafts.md).
-    bool enabled = false;
+    bool enabled = true;  // "Enable light shafts" (with Yusov 2013's model drawn alone)
     LightShaftTechnique technique = LightShaftTechnique::Epipolar;
     int slices = 512;               // "Epipolar slices"
     int samplesPerSlice = 256;      // "Total samples in slice"

@@ -21,7 +21,7 @@ using nlohmann::json;
 const char* kScenarios = R"json({
   "format": 1, "name": "test", "warmupFrames": 1, "measuredFrames": 3, "tables": true,
   "resolutions": [[96, 54]],
-  "base": {"atmosphere": {"lutResolution": "Small (8x32x16x8)"}, "shadows": {"resolution": "512", "cascades": 2}},
+  "base": {"atmosphere": {"lutResolution": "Small (8x32x16x8)"}, "shadows": {"resolution": "512", "cascades": 2}, "lightShafts": {"enabled": false}},
   "views": [{"name": "valley", "settings": {"camera": {"position": [0, 3200, 0], "yaw": 40, "pitch": -8}}}],
   "variants": [{"name": "SS-Int", "settings": {"atmosphere": {"singleScattering": "Integration", "multipleScattering": "None"}}},
                {"name": "SS-LUT + MS-Occluded", "settings": {"atmosphere": {"singleScattering": "LUT", "multipleScattering": "Occluded"}}}],

@@ -48,7 +48,9 @@ std::vector<SkySample> captureSky(const std::string& tag, const std::vector<std:
                                         L"--set", L"scene.orientationGrid=off", L"--set", L"terrain.enabled=off",
                                         L"--set", L"camera.position=0," + std::to_wstring(altitude) + L",0", L"--set", L"camera.pitch=" + std::to_wstring(pitch),
                                         L"--set", L"camera.fieldOfView=70", L"--set", L"sun.azimuth=20", L"--set", L"atmosphere.sunIntensity=2",
-                                        L"--set", L"atmosphere.multipleScattering=none", L"--set", L"atmosphere.scatteringOrders=1"};
+                                        L"--set", L"atmosphere.multipleScattering=none", L"--set", L"atmosphere.scatteringOrders=1",
+                                        // The atmosphere's own passes, per pixel (the light shafts are held to them elsewhere).
+                                        L"--set", L"lightShafts.enabled=off"};
     for (const std::wstring& s : settings) arguments.insert(arguments.end(), {L"--set", s});
     arguments.insert(arguments.end(), {L"--capture", (folder / "sky.png").wstring()});
     const ProcessResult run = runProcess(firmamentExe(), arguments);
