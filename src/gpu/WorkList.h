@@ -7,8 +7,9 @@
 // thread groups of the dispatch, the count the appending pass increments, then the x, y, z
 // groups of a layered dispatch (a layer per cascade). A small pass turns the count into groups
 // (shaders/lightshafts/work_list_arguments.hlsl).
+#include "gpu/Buffers.h"
+
 #include <d3d11.h>
-#include <wrl/client.h>
 
 namespace firmament {
 
@@ -24,18 +25,18 @@ public:
     // arguments (a layer of groups per cascade).
     void dispatch(ID3D11DeviceContext* context, bool layered = false) const;
 
-    ID3D11UnorderedAccessView* itemsUav() const { return itemsUav_.Get(); }
-    ID3D11UnorderedAccessView* argumentsUav() const { return argumentsUav_.Get(); }
-    ID3D11ShaderResourceView* itemsSrv() const { return itemsSrv_.Get(); }
-    ID3D11ShaderResourceView* argumentsSrv() const { return argumentsSrv_.Get(); }
-    ID3D11Buffer* arguments() const { return arguments_.Get(); }
+    ID3D11UnorderedAccessView* itemsUav() const { return items_.uav.Get(); }
+    ID3D11UnorderedAccessView* argumentsUav() const { return arguments_.uav.Get(); }
+    ID3D11ShaderResourceView* itemsSrv() const { return items_.srv.Get(); }
+    ID3D11ShaderResourceView* argumentsSrv() const { return arguments_.srv.Get(); }
+    ID3D11Buffer* items() const { return items_.buffer.Get(); }
+    ID3D11Buffer* arguments() const { return arguments_.buffer.Get(); }
     unsigned capacity() const { return capacity_; }
 
 private:
     unsigned capacity_;
-    ComPtr<ID3D11Buffer> items_, arguments_;
-    ComPtr<ID3D11UnorderedAccessView> itemsUav_, argumentsUav_;
-    ComPtr<ID3D11ShaderResourceView> itemsSrv_, argumentsSrv_;
+    StructuredBuffer items_;
+    IndirectArguments arguments_;
 };
 
 }  // namespace firmament

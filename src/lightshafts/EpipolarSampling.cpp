@@ -232,28 +232,20 @@ void EpipolarSampling::march(FrameContext& frame, CascadeProcessing mode, int ma
     const unsigned capacity = marchList_->capacity();
     const unsigned parts = capacity * static_cast<unsigned>(marchedCascades);
     if (parts > cascadePartCount_) {
-        D3D11_BUFFER_DESC desc{};
-        desc.ByteWidth = parts * 32;
-        desc.Usage = D3D11_USAGE_DEFAULT;
-        desc.BindFlags = D3D11_BIND_UNORDERED_ACCESS | D3D11_BIND_SHADER_RESOURCE;
-        desc.MiscFlags = D3D11_RESOURCE_MISC_BUFFER_STRUCTURED;
-        desc.StructureByteStride = 32;
-        check(frame.device->CreateBuffer(&desc, nullptr, &cascadeParts_), "CreateBuffer (cascade parts)");
-        check(frame.device->CreateUnorderedAccessView(cascadeParts_.Get(), nullptr, &cascadePartsUav_), "CreateUnorderedAccessView (cascade parts)");
-        check(frame.device->CreateShaderResourceView(cascadeParts_.Get(), nullptr, &cascadePartsSrv_), "CreateShaderResourceView (cascade parts)");
+        cascadeParts_ = createStructuredBuffer(frame.device, parts, 32, nullptr, "cascade parts");
         cascadePartCount_ = parts;
     }
     const ShaderKey marchCascades = computeKey("march_cascades");
     if (mode == CascadeProcessing::MultiPass) {
         for (int k = 0; k < marchedCascades; ++k) {
             cascadePass_.update(frame.context, gpu::CascadePassConstants{glm::uvec4(static_cast<unsigned>(k), capacity, 1u, 0u)});
-            run(frame, marchCascades, {cascadePartsUav_.Get()}, {CascadeParts}, 0, 0, marchList_.get());
+            run(frame, marchCascades, {cascadeParts_.uav.Get()}, {CascadeParts}, 0, 0, marchList_.get());
         }
     } else {
         cascadePass_.update(frame.context, gpu::CascadePassConstants{glm::uvec4(0u, capacity, static_cast<unsigned>(marchedCascades), 0u)});
-        run(frame, marchCascades, {cascadePartsUav_.Get()}, {CascadeParts}, 0, 0, marchList_.get(), true);
+        run(frame, marchCascades, {cascadeParts_.uav.Get()}, {CascadeParts}, 0, 0, marchList_.get(), true);
     }
-    inputs_[CascadeParts] = cascadePartsSrv_.Get();
+    inputs_[CascadeParts] = cascadeParts_.srv.Get();
     run(frame, computeKey("combine_cascades"), {marched_.uav.Get()}, {Marched}, 0, 0, marchList_.get());
     inputs_[CascadeParts] = nullptr;
 }

@@ -14,6 +14,7 @@
 #include "gpu/ConstantBuffer.h"
 #include "gpu/FullscreenPass.h"
 #include "gpu/Texture.h"
+#include "gpu/Buffers.h"
 #include "gpu/WorkList.h"
 #include "lightshafts/LightShaftSettings.h"
 #include "lightshafts/LightShaftStructures.h"
@@ -82,9 +83,7 @@ private:
     ConstantBuffer<gpu::EpipolarConstants> constants_;
     ConstantBuffer<gpu::CascadePassConstants> cascadePass_;
     // Each listed sample's march through each cascade, in the cascade-by-cascade modes.
-    ComPtr<ID3D11Buffer> cascadeParts_;
-    ComPtr<ID3D11UnorderedAccessView> cascadePartsUav_;
-    ComPtr<ID3D11ShaderResourceView> cascadePartsSrv_;
+    StructuredBuffer cascadeParts_;
     unsigned cascadePartCount_ = 0;
     FullscreenPass states_;  // the fixed-function states of the sampling's dots
     Inputs inputs_{};

@@ -2,6 +2,7 @@
 
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/AtmosphereParameters.h"
+#include "clouds/CloudParticles.h"
 #include "lightshafts/LightShafts.h"
 #include "render/FrameContext.h"
 #include "scene/OrientationGridPass.h"
@@ -33,6 +34,7 @@ Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLib
                                          AtmosphereParameters{}.earthRadius)),
       shadows_(std::make_unique<CascadedShadowMaps>(device)),
       lightShafts_(std::make_unique<LightShafts>(device)),
+      clouds_(std::make_unique<CloudParticles>(device)),
       toneMapping_(std::make_unique<ToneMapping>(device)) {}
 
 Renderer::~Renderer() = default;
@@ -65,6 +67,11 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
     }
     // 3. The shadow cascades, then 4. the terrain lit by the atmosphere's tables through them.
     if (state.terrain.enabled) renderShadowsAndTerrain(frame, state);
+    // 4b. The clouds' particles, generated and sorted on the GPU; shown as their bounding shapes.
+    if (state.clouds.showParticles) {
+        clouds_->update(frame, state.clouds);
+        clouds_->drawBoundingShapes(frame);
+    }
     // 5. The sky and the sun where nothing was drawn, 6. the aerial perspective over geometry:
     //    with light shafts, both in their pass, through the shadow cascades drawn this frame.
     if (lightShaftsDrawn(state)) {

@@ -26,6 +26,7 @@ struct State;
 struct FrameContext;
 class Atmosphere;
 class CascadedShadowMaps;
+class CloudParticles;
 class LightShafts;
 class OrientationGridPass;
 class Terrain;
@@ -92,6 +93,7 @@ private:
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<CascadedShadowMaps> shadows_;
     std::unique_ptr<LightShafts> lightShafts_;
+    std::unique_ptr<CloudParticles> clouds_;
     std::unique_ptr<ToneMapping> toneMapping_;
 };
 

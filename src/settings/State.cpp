@@ -22,6 +22,7 @@ std::vector<SettingsSection> State::sections() {
             {"terrain", [this](SettingsVisitor& v) { terrain.visit(v); }},
             {"shadows", [this](SettingsVisitor& v) { shadows.visit(v); }},
             {"lightShafts", [this](SettingsVisitor& v) { lightShafts.visit(v); }},
+            {"clouds", [this](SettingsVisitor& v) { clouds.visit(v); }},
             {"toneMapping", [this](SettingsVisitor& v) { toneMapping.visit(v); }},
             {"shaders", [this](SettingsVisitor& v) { shaders.visit(v); }},
             {"ui", [this](SettingsVisitor& v) { ui.visit(v); }}};

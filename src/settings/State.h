@@ -6,6 +6,7 @@
 //   {"format": 1, "camera": {"position": [0, 8000, 0], "yaw": 0, ...}, "sun": {...}, ...,
 //    "bookmarks": {"1": {"camera": {...}, "sun": {...}}}}
 #include "atmosphere/AtmosphereSettings.h"
+#include "clouds/CloudSettings.h"
 #include "core/Camera.h"
 #include "core/Settings.h"
 #include "input/FlyCamera.h"
@@ -36,8 +37,8 @@ struct ShaderSettings {
     void visit(SettingsVisitor& v) { v.field("autoReload", autoReload, "Reload shaders when their files change"); }
 };
 
-enum class Panel { Basic, Additional, ToneMapping, Performance };
-inline constexpr std::array<std::string_view, 4> kPanelNames{"Basic", "Additional", "Tone mapping", "Performance"};
+enum class Panel { Basic, Additional, ToneMapping, Clouds, Performance };
+inline constexpr std::array<std::string_view, 5> kPanelNames{"Basic", "Additional", "Tone mapping", "Clouds", "Performance"};
 
 struct UiSettings {
     Panel panel = Panel::Basic;
@@ -71,6 +72,7 @@ struct State {
     TerrainSettings terrain;
     ShadowSettings shadows;
     LightShaftSettings lightShafts;
+    CloudSettings clouds;
     ToneMappingSettings toneMapping;
     ShaderSettings shaders;
     UiSettings ui;

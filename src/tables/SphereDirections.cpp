@@ -1,6 +1,6 @@
 #include "tables/SphereDirections.h"
 
-#include "gpu/Hresult.h"
+#include "gpu/Buffers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,18 +23,7 @@ std::vector<glm::vec4> uniformSphereDirections(int count) {
 
 ComPtr<ID3D11ShaderResourceView> createSphereDirectionsView(ID3D11Device* device, int count) {
     const auto directions = uniformSphereDirections(count);
-    D3D11_BUFFER_DESC desc{};
-    desc.ByteWidth = static_cast<UINT>(directions.size() * sizeof(glm::vec4));
-    desc.Usage = D3D11_USAGE_IMMUTABLE;
-    desc.BindFlags = D3D11_BIND_SHADER_RESOURCE;
-    desc.MiscFlags = D3D11_RESOURCE_MISC_BUFFER_STRUCTURED;
-    desc.StructureByteStride = sizeof(glm::vec4);
-    const D3D11_SUBRESOURCE_DATA data{directions.data(), 0, 0};
-    ComPtr<ID3D11Buffer> buffer;
-    check(device->CreateBuffer(&desc, &data, &buffer), "CreateBuffer (sphere directions)");
-    ComPtr<ID3D11ShaderResourceView> view;
-    check(device->CreateShaderResourceView(buffer.Get(), nullptr, &view), "CreateShaderResourceView (sphere directions)");
-    return view;
+    return createStructuredBuffer(device, static_cast<unsigned>(directions.size()), sizeof(glm::vec4), directions.data(), "sphere directions").srv;
 }
 
 }  // namespace firmament

@@ -81,6 +81,7 @@ GuiRequests drawGui(GuiModel& m) {
             case Panel::Basic: basicPanel(panel); break;
             case Panel::Additional: additionalPanel(panel); break;
             case Panel::ToneMapping: panels::toneMapping(panel); break;
+            case Panel::Clouds: panels::clouds(panel); break;
             case Panel::Performance: panels::performance(panel); break;
         }
         ImGui::PopItemWidth();

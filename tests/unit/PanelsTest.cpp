@@ -44,7 +44,7 @@ public:
 
 TEST(Panels, EveryPanelDrawsInEveryStateWithExistingKeys) {
     HeadlessImGui gui;
-    for (const Panel panel : {Panel::Basic, Panel::Additional, Panel::ToneMapping, Panel::Performance})
+    for (const Panel panel : {Panel::Basic, Panel::Additional, Panel::ToneMapping, Panel::Clouds, Panel::Performance})
         for (const AtmosphereModel model : {AtmosphereModel::Yusov2013, AtmosphereModel::Bruneton2008})
             for (const ModelComparison comparison : {ModelComparison::None, ModelComparison::Split, ModelComparison::Difference})
                 for (const bool custom : {false, true})

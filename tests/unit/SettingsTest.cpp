@@ -94,7 +94,7 @@ TEST(Settings, BadJsonNamesTheKeyAndChangesNothing) {
     expectSettingsError(load(R"({"camera": {"fieldOfView": "wide"}})"), "camera.fieldOfView: expected a number, got \"wide\"");
     expectSettingsError(load(R"({"camera": {"fieldOfView": 500}})"), "camera.fieldOfView: 500 is outside 10 to 120");
     expectSettingsError(load(R"({"display": {"vsync": 1}})"), "display.vsync: expected true or false");
-    expectSettingsError(load(R"({"ui": {"panel": "Clouds"}})"), "ui.panel: \"Clouds\" is not one of Basic, Additional, Tone mapping, Performance");
+    expectSettingsError(load(R"({"ui": {"panel": "Sky"}})"), "ui.panel: \"Sky\" is not one of Basic, Additional, Tone mapping, Clouds, Performance");
     expectSettingsError(load(R"({"camera": {"position": [1, 2]}})"), "camera.position: expected three numbers");
     expectSettingsError(load(R"({"camera": 5})"), "camera: expected an object");
     expectSettingsError(load(R"({"format": 2})"), "format: 2 is not a state format");
@@ -131,7 +131,7 @@ TEST(Settings, BadSetNamesTheKeyAndChangesNothing) {
     expectSettingsError(set("camera.fieldOfView=nan"), "camera.fieldOfView: expected a number");
     expectSettingsError(set("display.vsync=maybe"), "display.vsync: expected on or off");
     expectSettingsError(set("camera.position=1,2"), "camera.position: expected x,y,z");
-    expectSettingsError(set("ui.panel=clouds"), "ui.panel: 'clouds' is not one of");
+    expectSettingsError(set("ui.panel=sky"), "ui.panel: 'sky' is not one of");
     expectSettingsError(set("camera.fieldOfView"), "is not section.key=value");
     EXPECT_EQ(state.sun.elevationDegrees, Sun{}.elevationDegrees);
 }

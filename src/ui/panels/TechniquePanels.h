@@ -23,8 +23,9 @@ TechniquePanel sun();         // the sun's position and intensity, the tables' p
 TechniquePanel camera();      // camera, flight, HID devices (CameraPanel.cpp)
 TechniquePanel shaders();     // hot reload, saving and loading the state (ShaderPanel.cpp)
 
-// The whole Tone mapping and Performance panels.
+// The whole Tone mapping, Clouds and Performance panels.
 void toneMapping(PanelContext& panel);  // ToneMappingPanel.cpp
+void clouds(PanelContext& panel);       // CloudPanel.cpp
 void performance(PanelContext& panel);  // PerformancePanel.cpp
 
 }  // namespace firmament::panels

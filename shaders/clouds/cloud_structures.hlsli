@@ -1,0 +1,34 @@
+#ifndef FIRMAMENT_CLOUD_STRUCTURES_HLSLI
+#define FIRMAMENT_CLOUD_STRUCTURES_HLSLI
+// The clouds' structures, one definition read by HLSL and C++ (src/clouds/CloudStructures.h),
+// under the rules of common/shared_structures.hlsli.
+#include "common/shared_structures.hlsli"
+
+// The cell grid, the density map and the particles' generation (clouds/cloud_field.hlsli;
+// docs/clouds.md). Built by CloudField::constants().
+struct CloudFieldConstants {
+    float4 grid;       // x: ring 0's cell size (m); y: the layer's middle altitude (m); z: its thickness (m); w: particle distance (m)
+    uint4 layout;      // x: rings; y: cells along a ring's side (D); z: layers; w: cells in the grid
+    uint4 centre;      // xy: the grid's centre in the outer ring's cells (x, z; two's complement ints); z: particle capacity; w: unused
+    float4 coverage;   // x: cloudiness; y: 1 / the coarse tap's period (1/m); z: 1 / the fine tap's period; w: the density map's side (texels)
+    float4 wind;       // xy: the coarse tap's wind offset (m, within its period); zw: the fine tap's
+    float4 animation;  // x, y: phases (radians) of the particles' size and density pulses; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudFieldConstants);
+
+// One merge pass of the particles' sort (clouds/merge_sorted.hlsl).
+struct CloudSortConstants {
+    uint4 merge;  // x: the length of the sorted runs this pass merges in pairs; yzw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudSortConstants);
+
+#ifndef __cplusplus
+// A particle as generation writes it (StructuredBuffer, 32 bytes).
+struct CloudParticle {
+    float4 centre;  // xyz: world position (m); w: horizontal radius (m)
+    float4 shape;   // x: vertical radius (m), along the planet's normal; y: density (0..1, animated);
+                    // z: azimuth (radians) that turns the particle's noise; w: ring
+};
+#endif
+
+#endif

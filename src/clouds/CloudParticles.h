@@ -1,0 +1,68 @@
+#pragma once
+// The clouds' particles, generated on the GPU each frame (Yusov 2014, "Particle generation";
+// docs/clouds.md): the density map (when its resolution changes), the valid cells of the grid,
+// a particle per layer of each valid cell through DispatchIndirect, and their back-to-front order
+// by a GPU sort (bitonic blocks of 256, then merges). Every pass after the valid cells runs from
+// arguments the GPU wrote: DispatchIndirect, and DrawInstancedIndirect for "Show particles".
+#include "clouds/CloudSettings.h"
+#include "clouds/CloudStructures.h"
+#include "gpu/Buffers.h"
+#include "gpu/ConstantBuffer.h"
+#include "gpu/Texture.h"
+#include "gpu/WorkList.h"
+
+#include <d3d11.h>
+#include <wrl/client.h>
+
+#include <memory>
+
+namespace firmament {
+
+using Microsoft::WRL::ComPtr;
+
+struct FrameContext;
+
+class CloudParticles {
+public:
+    explicit CloudParticles(ID3D11Device* device);
+
+    // This frame's particles, sorted back to front, for the camera and time of `frame`.
+    void update(FrameContext& frame, const CloudSettings& settings);
+    // "Show particles": their bounding ellipsoids into the HDR target, with depth.
+    void drawBoundingShapes(FrameContext& frame);
+
+    // What update() wrote (tests and the GUI read them back).
+    const gpu::CloudFieldConstants& constants() const { return constants_; }
+    unsigned capacity() const { return capacity_; }
+    ID3D11Texture2D* densityMap() const { return densityMap_.texture.Get(); }
+    ID3D11Buffer* cellList() const { return cells_.buffer.Get(); }
+    const WorkList& validCells() const { return *validCells_; }
+    ID3D11Buffer* particles() const { return particles_.buffer.Get(); }
+    // The particles' count at [3] (beyond the capacity when the grid holds more), then the
+    // dispatch's groups and the draw's arguments.
+    ID3D11Buffer* particleArguments() const { return arguments_.buffer.Get(); }
+    // (distance bits, slot) in back-to-front order, the first min(count, capacity) entries.
+    ID3D11Buffer* sortedKeys() const { return keys_[sortedIndex_].buffer.Get(); }
+
+private:
+    void resizeGrid(ID3D11Device* device, const CloudSettings& settings);
+    void generateDensityMap(FrameContext& frame, int resolution);
+    void sort(FrameContext& frame);
+
+    ConstantBuffer<gpu::CloudFieldConstants> fieldBuffer_;
+    ConstantBuffer<gpu::CloudSortConstants> sortBuffer_;
+    gpu::CloudFieldConstants constants_{};
+    ComPtr<ID3D11RasterizerState> noCulling_;
+    ComPtr<ID3D11DepthStencilState> depth_;
+
+    int rings_ = 0, dimension_ = 0, layers_ = 0, resolution_ = 0;
+    unsigned capacity_ = 0;
+    Texture2D densityMap_;
+    StructuredBuffer cells_;  // packed ring, i, j of every cell (src/clouds/CloudGrid.h)
+    std::unique_ptr<WorkList> validCells_;
+    StructuredBuffer particles_, keys_[2];
+    IndirectArguments arguments_;
+    int sortedIndex_ = 0;
+};
+
+}  // namespace firmament

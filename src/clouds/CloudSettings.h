@@ -1,0 +1,50 @@
+#pragma once
+// Settings of the clouds (section "clouds"): a layer of volumetric particles generated on the
+// GPU in rings of cells around the camera (Yusov 2014). The controls of Yusov's cloud sample
+// with its ranges and defaults (docs/clouds.md, "Controls").
+#include "core/Settings.h"
+
+#include <array>
+#include <string_view>
+
+namespace firmament {
+
+// "Cloud density resolution": the side of the density map, a power of two from 128 to 1024.
+inline constexpr std::array<std::string_view, 4> kCloudDensityResolutionNames{"128", "256", "512", "1024"};
+
+struct CloudSettings {
+    // "Show particles": the particles drawn as their bounding ellipsoids, lit by the sun, over
+    // the scene (the view of the cell grid and the generation; docs/clouds.md).
+    bool showParticles = false;
+    int densityResolution = 512;      // "Cloud density resolution"
+    float cloudiness = 0.65f;         // "Cloudiness": the share of the sky the density map covers
+    float altitude = 3000.0f;         // "Altitude" of the layer's middle above the surface (m)
+    float thickness = 700.0f;         // "Thickness" of the layer (m)
+    float speed = 0.2f;               // "Speed": the wind moves the density map at speed x 50 m/s
+    float particleDistance = 2.0e5f;  // "Particle distance": no particle beyond it (m); the outer ring's half-width
+    int rings = 5;                    // "Rings": each ring's cells are twice the size of the inner ring's
+    int ringDimension = 128;          // "Ring dimension": cells along a ring's side (a multiple of 4 is used)
+    int maxLayers = 4;                // "Max layers": particles a cell stacks through the thickness
+
+    // The ring dimension the grid uses: a multiple of 4, so that the inner ring fills the
+    // middle half of the next one exactly.
+    int effectiveRingDimension() const { return ringDimension / 4 * 4; }
+
+    void visit(SettingsVisitor& v) {
+        v.field("showParticles", showParticles, "Show particles");
+        int resolutionIndex = 0;
+        while (resolutionIndex < 3 && (128 << resolutionIndex) < densityResolution) ++resolutionIndex;
+        v.choiceIndex("densityResolution", resolutionIndex, kCloudDensityResolutionNames, "Cloud density resolution");
+        densityResolution = 128 << resolutionIndex;
+        v.field("cloudiness", cloudiness, {0.0f, 1.0f}, "Cloudiness");
+        v.field("altitude", altitude, {1000.0f, 10000.0f}, "Altitude");
+        v.field("thickness", thickness, {100.0f, 1500.0f}, "Thickness");
+        v.field("speed", speed, {0.0f, 2.0f}, "Speed");
+        v.field("particleDistance", particleDistance, {1.0e4f, 5.0e5f, true}, "Particle distance");
+        v.field("rings", rings, {1, 8}, "Rings");
+        v.field("ringDimension", ringDimension, {16, 256}, "Ring dimension");
+        v.field("maxLayers", maxLayers, {1, 16}, "Max layers");
+    }
+};
+
+}  // namespace firmament

@@ -1,0 +1,27 @@
+// The Clouds panel: the cell grid (rings, their dimension, layers, particle distance), the layer
+// (altitude, thickness), the cloudiness, the density map's resolution and the wind, and the view
+// of the particles' bounding shapes. The grid's size in cells and particles is shown under it.
+#include "clouds/CloudField.h"
+#include "clouds/CloudGrid.h"
+#include "ui/panels/TechniquePanels.h"
+
+#include <imgui.h>
+
+namespace firmament::panels {
+
+void clouds(PanelContext& panel) {
+    const CloudSettings& c = panel.model.state.clouds;
+    editSettings(panel, "clouds", {"showParticles"});
+    ImGui::SeparatorText("Layer");
+    editSettings(panel, "clouds", {"cloudiness", "altitude", "thickness", "speed", "densityResolution"});
+    ImGui::SeparatorText("Cell grid");
+    editSettings(panel, "clouds", {"rings", "ringDimension", "maxLayers", "particleDistance"});
+    if (c.effectiveRingDimension() != c.ringDimension) ImGui::TextDisabled("Ring dimension: %d used (a multiple of 4)", c.effectiveRingDimension());
+    const CloudGrid grid(c.rings, c.effectiveRingDimension(), c.particleDistance);
+    ImGui::TextDisabled("%lld cells; inner cells %.0f m, outer %.0f m; room for %u particles",
+                        CloudGrid::cellCount(c.rings, c.effectiveRingDimension()), grid.cellSize(0), grid.cellSize(c.rings - 1),
+                        cloudParticleCapacity(c));
+    ImGui::TextDisabled("The clouds' shading comes with their look-up tables (docs/clouds.md)");
+}
+
+}  // namespace firmament::panels

@@ -1,0 +1,241 @@
+// The clouds' particles on the WARP device (src/clouds/CloudParticles.h, shaders/clouds/):
+// the density map, the valid cells and the generated particles against the CPU twin
+// (src/clouds/CloudField.h) for fixed seeds, cameras and times; the GPU sort's back-to-front
+// order; and finite particles over the layer's places and every control's extremes.
+#include "FrameTest.h"
+#include "clouds/CloudField.h"
+#include "clouds/CloudParticles.h"
+#include "core/Camera.h"
+#include "render/FrameContext.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <tuple>
+
+namespace firmament::test {
+namespace {
+
+constexpr int kWidth = 96, kHeight = 54;
+constexpr float kEarthRadius = 6360.0e3f;
+
+template <typename T>
+std::vector<T> fromBytes(const std::vector<std::uint8_t>& bytes, size_t count) {
+    std::vector<T> values(count);
+    std::memcpy(values.data(), bytes.data(), count * sizeof(T));
+    return values;
+}
+
+class CloudParticlesTest : public FrameTest {
+protected:
+    void SetUp() override {
+        FrameTest::SetUp();
+        setUpFrame(kWidth, kHeight);
+        clouds = std::make_unique<CloudParticles>(device());
+    }
+
+    // One update for a camera at `position` looking along +z, at `seconds`.
+    void generate(const CloudSettings& settings, glm::vec3 position, double seconds) {
+        camera.position = position;
+        camera.pitchDegrees = 10.0f;
+        const glm::mat4 viewProjection = camera.projection(static_cast<float>(kWidth) / kHeight) * camera.view();
+        constants = gpu::FrameConstants{};
+        constants.viewProjection = viewProjection;
+        constants.inverseViewProjection = glm::inverse(viewProjection);
+        constants.cameraPosition = glm::vec4(position, position.y);
+        constants.directionToSun = glm::vec4(sun.direction(), 0.0f);
+        constants.screen = glm::vec4(kWidth, kHeight, 1.0f / kWidth, 1.0f / kHeight);
+        constants.planet = glm::vec4(kEarthRadius, 0.0f, 0.0f, 0.0f);
+        frameConstants->update(context(), constants);
+        FrameContext frame{device(), context(), *productShaderLibrary, *profiler, targets, frameConstants->get(), constants, camera, sun,
+                           seconds, 1.0 / 60.0, true};
+        clouds->update(frame, settings);
+    }
+
+    std::vector<unsigned> arguments() { return fromBytes<unsigned>(readBuffer(device(), context(), clouds->particleArguments()), 8); }
+    unsigned particleCount() { return std::min(arguments()[3], clouds->capacity()); }
+    std::vector<gpu::CloudParticle> particles(unsigned count) {
+        return fromBytes<gpu::CloudParticle>(readBuffer(device(), context(), clouds->particles()), count);
+    }
+    std::vector<glm::uvec2> sortedKeys(unsigned count) { return fromBytes<glm::uvec2>(readBuffer(device(), context(), clouds->sortedKeys()), count); }
+    std::vector<float> densityMap() {
+        const ReadbackImage image = readTexture2D(device(), context(), clouds->densityMap());
+        return fromBytes<float>(image.bytes, static_cast<size_t>(image.width) * image.height);
+    }
+    CloudFieldModel model(const CloudSettings& settings) {
+        std::vector<std::uint32_t> packed;
+        for (const CloudCell& cell : CloudGrid(settings).cells()) packed.push_back(packCloudCell(cell));
+        return modelCloudField(clouds->constants(), packed, cloudDensityMap(settings.densityResolution), camera.position, kEarthRadius);
+    }
+
+    void expectFieldMatches(const CloudSettings& settings, const char* what);
+    void expectBackToFront(const char* what);
+
+    Camera camera;
+    Sun sun;
+    gpu::FrameConstants constants{};
+    std::unique_ptr<CloudParticles> clouds;
+};
+
+TEST_F(CloudParticlesTest, TheDensityMapMatchesTheCpuTwin) {
+    for (int resolution : {128, 1024}) {
+        CloudSettings settings;
+        settings.rings = 1;
+        settings.ringDimension = 16;
+        settings.densityResolution = resolution;
+        generate(settings, glm::vec3(0.0f, 1500.0f, 0.0f), 0.0);
+        const std::vector<float> gpuMap = densityMap();
+        const std::vector<float> cpuMap = cloudDensityMap(resolution);
+        ASSERT_EQ(gpuMap.size(), cpuMap.size());
+        float worst = 0.0f;
+        for (size_t k = 0; k < cpuMap.size(); ++k) worst = std::max(worst, std::abs(gpuMap[k] - cpuMap[k]));
+        EXPECT_LT(worst, 2e-5f) << resolution;
+    }
+}
+
+// The valid cells and the particles of the GPU against the twin's, cell by cell and particle by
+// particle. A cell may differ only where the twin finds it within float rounding of a threshold.
+void CloudParticlesTest::expectFieldMatches(const CloudSettings& settings, const char* what) {
+    const CloudFieldModel cpu = model(settings);
+    const WorkList& list = clouds->validCells();
+    const unsigned validCount = fromBytes<unsigned>(readBuffer(device(), context(), list.arguments()), 8)[3];
+    std::vector<unsigned> gpuValid = fromBytes<unsigned>(readBuffer(device(), context(), list.items()), validCount);
+    std::sort(gpuValid.begin(), gpuValid.end());
+    std::vector<unsigned> borderline;
+    std::vector<unsigned> mismatched;
+    std::set_symmetric_difference(gpuValid.begin(), gpuValid.end(), cpu.validCells.begin(), cpu.validCells.end(), std::back_inserter(mismatched));
+    for (unsigned cell : mismatched) {
+        const bool nearThreshold = std::abs(cpu.coverage[cell]) < 1e-4f || std::abs(cpu.reach[cell] - settings.particleDistance) < 1.0f;
+        EXPECT_TRUE(nearThreshold) << what << ": cell " << cell << " differs (coverage " << cpu.coverage[cell] << ", reach " << cpu.reach[cell] << ")";
+    }
+    EXPECT_GT(cpu.validCells.size(), 0u) << what;
+
+    const unsigned count = particleCount();
+    const std::vector<gpu::CloudParticle> gpuParticles = particles(count);
+    EXPECT_NEAR(static_cast<double>(count), static_cast<double>(cpu.particles.size()), 4.0 * mismatched.size()) << what;
+    auto key = [](glm::vec3 c) { return std::make_tuple(std::lround(c.x / 4.0f), std::lround(c.y / 4.0f), std::lround(c.z / 4.0f)); };
+    std::map<std::tuple<long, long, long>, const gpu::CloudParticle*> byPlace;
+    for (const gpu::CloudParticle& p : gpuParticles) byPlace[key(glm::vec3(p.centre))] = &p;
+    size_t matched = 0;
+    for (const ModelParticle& m : cpu.particles) {
+        auto found = byPlace.find(key(m.centre));
+        if (found == byPlace.end()) continue;  // on a 4 m boundary: rare; counted below
+        const gpu::CloudParticle& g = *found->second;
+        ++matched;
+        EXPECT_LT(glm::length(glm::vec3(g.centre) - m.centre), 2.0f) << what;
+        // Radii within float rounding of the cell's size (the coverage's rounding scales them).
+        const float size = std::ldexp(clouds->constants().grid.x, m.ring);
+        EXPECT_NEAR(g.centre.w, m.horizontalRadius, 2e-5f * size) << what;
+        EXPECT_NEAR(g.shape.x, m.verticalRadius, 2e-5f * size) << what;
+        EXPECT_NEAR(g.shape.y, m.density, 1e-4f) << what;
+        EXPECT_NEAR(g.shape.z, m.azimuth, 1e-5f) << what;
+        EXPECT_EQ(static_cast<int>(g.shape.w), m.ring) << what;
+    }
+    EXPECT_GT(matched, cpu.particles.size() * 99 / 100) << what;
+}
+
+TEST_F(CloudParticlesTest, ValidCellsAndParticlesMatchTheCpuTwin) {
+    CloudSettings small;
+    small.rings = 3;
+    small.ringDimension = 32;
+    small.particleDistance = 3.0e4f;
+    generate(small, glm::vec3(12345.0f, 1500.0f, -6789.0f), 37.0);
+    expectFieldMatches(small, "small grid");
+    // The sample's defaults, another place and time, over the layer.
+    generate(CloudSettings{}, glm::vec3(-2.5e5f, 4200.0f, 8.0e4f), 1234.5);
+    expectFieldMatches(CloudSettings{}, "defaults");
+}
+
+// Every consecutive pair is drawn back to front, each particle once, and each key holds the
+// particle's distance from the camera.
+void CloudParticlesTest::expectBackToFront(const char* what) {
+    const unsigned count = particleCount();
+    ASSERT_GT(count, 0u) << what;
+    const std::vector<glm::uvec2> keys = sortedKeys(count);
+    const std::vector<gpu::CloudParticle> written = particles(count);
+    std::vector<bool> seen(count, false);
+    const glm::vec3 eye = camera.position;
+    for (unsigned k = 0; k < count; ++k) {
+        ASSERT_LT(keys[k].y, count) << what;
+        EXPECT_FALSE(seen[keys[k].y]) << what << ": particle " << keys[k].y << " twice";
+        seen[keys[k].y] = true;
+        float distance;
+        std::memcpy(&distance, &keys[k].x, sizeof(float));
+        EXPECT_NEAR(distance, glm::length(glm::vec3(written[keys[k].y].centre) - eye), 1e-3f * distance) << what;
+        if (k > 0 && keys[k - 1].x < keys[k].x) {
+            ADD_FAILURE() << what << ": entry " << k << " is farther than the one before it";
+            return;
+        }
+    }
+}
+
+TEST_F(CloudParticlesTest, TheSortPutsEveryParticleBackToFront) {
+    CloudSettings settings;
+    settings.rings = 4;
+    settings.ringDimension = 64;
+    settings.particleDistance = 6.0e4f;
+    // Below, inside and above the layer; then a small field of less than one block.
+    generate(settings, glm::vec3(0.0f, 500.0f, 0.0f), 0.0);
+    expectBackToFront("below the layer");
+    generate(settings, glm::vec3(3.0e4f, 3000.0f, -1.0e4f), 60.0);
+    expectBackToFront("inside the layer");
+    generate(settings, glm::vec3(-7.0e4f, 9000.0f, 2.0e4f), 600.0);
+    expectBackToFront("above the layer");
+    settings.rings = 1;
+    settings.ringDimension = 16;
+    settings.maxLayers = 1;
+    settings.particleDistance = 600.0f;
+    generate(settings, glm::vec3(0.0f, 3000.0f, 0.0f), 0.0);
+    EXPECT_LT(particleCount(), 256u);
+    expectBackToFront("one partial block");
+}
+
+TEST_F(CloudParticlesTest, ParticlesAreFiniteOverPlacesAndEveryControlsExtremes) {
+    std::vector<std::pair<std::string, CloudSettings>> cases;
+    CloudSettings base;
+    base.rings = 3;
+    base.ringDimension = 32;
+    cases.push_back({"base", base});
+    auto with = [&](const char* name, auto change) {
+        CloudSettings s = base;
+        change(s);
+        cases.push_back({name, s});
+    };
+    with("cloudiness 1", [](CloudSettings& s) { s.cloudiness = 1.0f; });
+    with("altitude 1000, thickness 1500", [](CloudSettings& s) { s.altitude = 1000.0f; s.thickness = 1500.0f; });
+    with("altitude 10000, thickness 100", [](CloudSettings& s) { s.altitude = 10000.0f; s.thickness = 100.0f; });
+    with("speed 2", [](CloudSettings& s) { s.speed = 2.0f; });
+    with("particle distance 1e4", [](CloudSettings& s) { s.particleDistance = 1.0e4f; });
+    with("particle distance 5e5", [](CloudSettings& s) { s.particleDistance = 5.0e5f; });
+    with("1 ring of 16", [](CloudSettings& s) { s.rings = 1; s.ringDimension = 16; });
+    with("8 rings", [](CloudSettings& s) { s.rings = 8; });
+    with("ring dimension 256", [](CloudSettings& s) { s.rings = 1; s.ringDimension = 256; });
+    with("1 layer", [](CloudSettings& s) { s.maxLayers = 1; });
+    with("16 layers", [](CloudSettings& s) { s.maxLayers = 16; });
+    with("density map 128", [](CloudSettings& s) { s.densityResolution = 128; });
+    with("density map 1024", [](CloudSettings& s) { s.densityResolution = 1024; });
+    for (const auto& [name, settings] : cases)
+        for (const float altitude : {100.0f, settings.altitude, 3.0e4f, 4.0e5f}) {
+            generate(settings, glm::vec3(1.0e3f, altitude, -2.0e3f), 3600.0 * 5.0);
+            const unsigned count = particleCount();
+            if (std::abs(altitude - settings.altitude) < settings.particleDistance / 2.0f) {
+                EXPECT_GT(count, 0u) << name << " at " << altitude << " m";
+            }
+            for (const gpu::CloudParticle& p : particles(count)) {
+                const bool finite = std::isfinite(p.centre.x) && std::isfinite(p.centre.y) && std::isfinite(p.centre.z) &&
+                                    std::isfinite(p.centre.w) && std::isfinite(p.shape.x) && std::isfinite(p.shape.y) && std::isfinite(p.shape.z);
+                if (!finite || !(p.centre.w > 0.0f) || !(p.shape.x > 0.0f) || !(p.shape.y > 0.0f)) {
+                    ADD_FAILURE() << name << " at " << altitude << " m: a particle is not finite and positive";
+                    break;
+                }
+            }
+        }
+}
+
+}  // namespace
+}  // namespace firmament::test
