@@ -13,6 +13,7 @@ struct CloudFieldConstants {
     float4 coverage;   // x: cloudiness; y: 1 / the coarse tap's period (1/m); z: 1 / the fine tap's period; w: the density map's side (texels)
     float4 wind;       // xy: the coarse tap's wind offset (m, within its period); zw: the fine tap's
     float4 animation;  // x, y: phases (radians) of the particles' size and density pulses; zw: unused
+    float4 tableSizes; // the optical depth table's N0 (entry zenith), N1 (entry azimuth), N2 (direction zenith), N3 (direction azimuth)
 };
 FIRMAMENT_CONSTANT_BUFFER(CloudFieldConstants);
 
@@ -21,6 +22,14 @@ struct CloudSortConstants {
     uint4 merge;  // x: the length of the sorted runs this pass merges in pairs; yzw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(CloudSortConstants);
+
+// The particle's tables (clouds/precompute_*.hlsl).
+struct ParticleTableConstants {
+    uint4 sizes;    // the optical depth table's N0 (entry zenith), N1 (entry azimuth), N2 (direction zenith), N3 (direction azimuth)
+    uint4 options;  // x: density method (0 radial fall-off and noise, 1 thresholded noise, 2 pyroclastic); y: steps
+                    // along a chord; z: the first z slice of this unit of work; w: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(ParticleTableConstants);
 
 #ifndef __cplusplus
 // A particle as generation writes it (StructuredBuffer, 32 bytes).

@@ -290,7 +290,8 @@ void App::renderFrame(bool drawGui) {
                    notice_,
                    noticeIsError_,
                    status.exposure,
-                   status.atmosphereProgress};
+                   status.atmosphereProgress,
+                   status.cloudTableProgress};
     const GuiRequests requests = overlay_->build(model);
     const auto gui = [&](ID3D11RenderTargetView* output) { overlay_->render(context, output); };
     renderer_.render(state_, FrameTime{timer_.totalSeconds(), timer_.deltaSeconds()}, options_.headless, outputTarget(),

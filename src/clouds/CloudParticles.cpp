@@ -56,10 +56,11 @@ void CloudParticles::generateDensityMap(FrameContext& frame, int resolution) {
     resolution_ = resolution;
 }
 
-void CloudParticles::update(FrameContext& frame, const CloudSettings& settings) {
+void CloudParticles::update(FrameContext& frame, const CloudSettings& settings, glm::vec4 tableSizes) {
     ID3D11DeviceContext* context = frame.context;
     resizeGrid(frame.device, settings);
     constants_ = cloudFieldConstants(settings, glm::dvec3(frame.camera.position), frame.timeSeconds);
+    constants_.tableSizes = tableSizes;
     fieldBuffer_.update(context, constants_);
     generateDensityMap(frame, settings.densityResolution);
     ID3D11Buffer* buffers[] = {frame.frameConstants, fieldBuffer_.get(), sortBuffer_.get()};
@@ -119,6 +120,12 @@ void CloudParticles::drawBoundingShapes(FrameContext& frame) {
     context->OMSetDepthStencilState(depth_.Get(), 0);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
     context->RSSetState(noCulling_.Get());
+    drawInstanced(frame, kShapeVertexShader, kShapePixelShader);
+    context->OMSetDepthStencilState(nullptr, 0);
+}
+
+void CloudParticles::drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader) {
+    ID3D11DeviceContext* context = frame.context;
     const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(frame.width()), static_cast<float>(frame.height()), 0.0f, 1.0f};
     context->RSSetViewports(1, &viewport);
     context->IASetInputLayout(nullptr);
@@ -129,14 +136,13 @@ void CloudParticles::drawBoundingShapes(FrameContext& frame) {
     ID3D11ShaderResourceView* inputs[] = {keys_[sortedIndex_].srv.Get(), particles_.srv.Get()};
     context->VSSetShaderResources(0, 2, inputs);
     context->PSSetShaderResources(0, 2, inputs);
-    context->VSSetShader(frame.shaders.vertexShader(kShapeVertexShader), nullptr, 0);
-    context->PSSetShader(frame.shaders.pixelShader(kShapePixelShader), nullptr, 0);
+    context->VSSetShader(frame.shaders.vertexShader(vertexShader), nullptr, 0);
+    context->PSSetShader(frame.shaders.pixelShader(pixelShader), nullptr, 0);
     context->DrawInstancedIndirect(arguments_.buffer.Get(), 4 * sizeof(unsigned));
     ID3D11ShaderResourceView* none[2] = {};
     context->VSSetShaderResources(0, 2, none);
     context->PSSetShaderResources(0, 2, none);
     context->RSSetState(nullptr);
-    context->OMSetDepthStencilState(nullptr, 0);
 }
 
 }  // namespace firmament

@@ -8,6 +8,7 @@
 #include "clouds/CloudStructures.h"
 #include "gpu/Buffers.h"
 #include "gpu/ConstantBuffer.h"
+#include "gpu/ShaderKey.h"
 #include "gpu/Texture.h"
 #include "gpu/WorkList.h"
 
@@ -26,10 +27,14 @@ class CloudParticles {
 public:
     explicit CloudParticles(ID3D11Device* device);
 
-    // This frame's particles, sorted back to front, for the camera and time of `frame`.
-    void update(FrameContext& frame, const CloudSettings& settings);
+    // This frame's particles, sorted back to front, for the camera and time of `frame`;
+    // `tableSizes`: the optical depth table's N0..N3, for the passes that read it.
+    void update(FrameContext& frame, const CloudSettings& settings, glm::vec4 tableSizes = glm::vec4(0.0f));
     // "Show particles": their bounding ellipsoids into the HDR target, with depth.
     void drawBoundingShapes(FrameContext& frame);
+    // Every particle, back to front, as a quad over its ellipsoid with these shaders
+    // (clouds/particle_shape.hlsli), into the targets and states the caller bound.
+    void drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader);
 
     // What update() wrote (tests and the GUI read them back).
     const gpu::CloudFieldConstants& constants() const { return constants_; }

@@ -9,13 +9,22 @@
 
 namespace firmament {
 
+// "Show particles": the particles as their bounding ellipsoids, or with the transparency their
+// optical depth table gives (the steps of Yusov 2014's algorithm overview).
+enum class ParticleView { Off, BoundingShapes, OpticalDepth };
+inline constexpr std::array<std::string_view, 3> kParticleViewNames{"Off", "Bounding shapes", "Optical depth"};
+// "Particle density": the density inside a particle, from which its optical depth table is
+// computed (Yusov 2014, "3D noise generation").
+enum class ParticleDensityMethod { RadialNoise, ThresholdedNoise, Pyroclastic };
+inline constexpr std::array<std::string_view, 3> kParticleDensityMethodNames{"Radial fall-off and noise", "Thresholded noise", "Pyroclastic"};
 // "Cloud density resolution": the side of the density map, a power of two from 128 to 1024.
 inline constexpr std::array<std::string_view, 4> kCloudDensityResolutionNames{"128", "256", "512", "1024"};
 
 struct CloudSettings {
-    // "Show particles": the particles drawn as their bounding ellipsoids, lit by the sun, over
-    // the scene (the view of the cell grid and the generation; docs/clouds.md).
-    bool showParticles = false;
+    // "Show particles": each particle drawn over the scene as its bounding ellipsoid lit by the
+    // sun, or white with the transparency of its optical depth (docs/clouds.md).
+    ParticleView showParticles = ParticleView::Off;
+    ParticleDensityMethod particleDensity = ParticleDensityMethod::RadialNoise;
     int densityResolution = 512;      // "Cloud density resolution"
     float cloudiness = 0.65f;         // "Cloudiness": the share of the sky the density map covers
     float altitude = 3000.0f;         // "Altitude" of the layer's middle above the surface (m)
@@ -31,7 +40,8 @@ struct CloudSettings {
     int effectiveRingDimension() const { return ringDimension / 4 * 4; }
 
     void visit(SettingsVisitor& v) {
-        v.field("showParticles", showParticles, "Show particles");
+        v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
+        v.choice("particleDensity", particleDensity, kParticleDensityMethodNames, "Particle density");
         int resolutionIndex = 0;
         while (resolutionIndex < 3 && (128 << resolutionIndex) < densityResolution) ++resolutionIndex;
         v.choiceIndex("densityResolution", resolutionIndex, kCloudDensityResolutionNames, "Cloud density resolution");

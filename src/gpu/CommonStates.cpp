@@ -43,6 +43,22 @@ ComPtr<ID3D11DepthStencilState> depthStencil(ID3D11Device* device, bool enable, 
 
 }  // namespace
 
+ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device) {
+    D3D11_BLEND_DESC desc{};
+    D3D11_RENDER_TARGET_BLEND_DESC& target = desc.RenderTarget[0];
+    target.BlendEnable = TRUE;
+    target.SrcBlend = D3D11_BLEND_ONE;
+    target.DestBlend = D3D11_BLEND_INV_SRC_ALPHA;
+    target.BlendOp = D3D11_BLEND_OP_ADD;
+    target.SrcBlendAlpha = D3D11_BLEND_ZERO;
+    target.DestBlendAlpha = D3D11_BLEND_ONE;
+    target.BlendOpAlpha = D3D11_BLEND_OP_ADD;
+    target.RenderTargetWriteMask = D3D11_COLOR_WRITE_ENABLE_ALL;
+    ComPtr<ID3D11BlendState> state;
+    check(device->CreateBlendState(&desc, &state), "CreateBlendState (premultiplied alpha)");
+    return state;
+}
+
 ComPtr<ID3D11SamplerState> linearClamp(ID3D11Device* device) {
     return sampler(device, D3D11_FILTER_MIN_MAG_MIP_LINEAR, D3D11_TEXTURE_ADDRESS_CLAMP, D3D11_COMPARISON_NEVER, "CreateSamplerState (linear clamp)");
 }

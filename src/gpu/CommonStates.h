@@ -25,6 +25,11 @@ ComPtr<ID3D11RasterizerState> cullBackScissored(ID3D11Device* device);
 // nearer the light than the cascade's range clamp to its near plane and still cast.
 ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScaledBias);
 
+// Blend states.
+// Premultiplied alpha over what is there: dst = src.rgb + (1 - src.a) dst.rgb (translucent
+// layers drawn back to front); the target's alpha is kept.
+ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device);
+
 // Depth-stencil states. Firmament's depth is reversed (1 at the near plane, 0 at the far one,
 // cleared to 0; src/core/Camera.h), so "nearer or equal" is GREATER_EQUAL.
 ComPtr<ID3D11DepthStencilState> depthNone(ID3D11Device* device);            // no test, no write

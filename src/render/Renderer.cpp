@@ -2,7 +2,7 @@
 
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/AtmosphereParameters.h"
-#include "clouds/CloudParticles.h"
+#include "clouds/Clouds.h"
 #include "lightshafts/LightShafts.h"
 #include "render/FrameContext.h"
 #include "scene/OrientationGridPass.h"
@@ -34,7 +34,7 @@ Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLib
                                          AtmosphereParameters{}.earthRadius)),
       shadows_(std::make_unique<CascadedShadowMaps>(device)),
       lightShafts_(std::make_unique<LightShafts>(device)),
-      clouds_(std::make_unique<CloudParticles>(device)),
+      clouds_(std::make_unique<Clouds>(device, tables)),
       toneMapping_(std::make_unique<ToneMapping>(device)) {}
 
 Renderer::~Renderer() = default;
@@ -67,11 +67,9 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
     }
     // 3. The shadow cascades, then 4. the terrain lit by the atmosphere's tables through them.
     if (state.terrain.enabled) renderShadowsAndTerrain(frame, state);
-    // 4b. The clouds' particles, generated and sorted on the GPU; shown as their bounding shapes.
-    if (state.clouds.showParticles) {
-        clouds_->update(frame, state.clouds);
-        clouds_->drawBoundingShapes(frame);
-    }
+    // 4b. The clouds' particles, generated and sorted on the GPU, and their tables; the particles'
+    //     view (Show particles) when it draws them as geometry.
+    clouds_->renderGeometry(frame, state.clouds);
     // 5. The sky and the sun where nothing was drawn, 6. the aerial perspective over geometry:
     //    with light shafts, both in their pass, through the shadow cascades drawn this frame.
     if (lightShaftsDrawn(state)) {
@@ -81,6 +79,8 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         atmosphere_->renderSky(frame, state.atmosphere);
         atmosphere_->renderAerialPerspective(frame, state.atmosphere);
     }
+    // 6b. The particles' translucent view over the lit scene.
+    clouds_->renderTranslucent(frame, state.clouds);
     // 7. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);
     // 8. The GUI over the output.
@@ -139,7 +139,7 @@ bool Renderer::lightShaftsDrawn(const State& state) const {
 double Renderer::groundY(double x, double z) const { return terrain_->groundY(x, z); }
 
 RendererStatus Renderer::status(const State& state) {
-    return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress()};
+    return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress(), clouds_->tableProgress()};
 }
 
 std::vector<TableTiming> Renderer::timeTables(const State& state, const std::filesystem::path& scratch) {

@@ -26,7 +26,7 @@ struct State;
 struct FrameContext;
 class Atmosphere;
 class CascadedShadowMaps;
-class CloudParticles;
+class Clouds;
 class LightShafts;
 class OrientationGridPass;
 class Terrain;
@@ -42,6 +42,7 @@ struct FrameTime {
 struct RendererStatus {
     ExposureReading exposure;                  // what the tone mapping applied, a few frames ago
     std::optional<double> atmosphereProgress;  // 0..1 while the atmosphere's tables are computed
+    std::optional<double> cloudTableProgress;  // 0..1 while the cloud particle's tables are computed
 };
 
 class Renderer {
@@ -93,7 +94,7 @@ private:
     std::unique_ptr<Terrain> terrain_;
     std::unique_ptr<CascadedShadowMaps> shadows_;
     std::unique_ptr<LightShafts> lightShafts_;
-    std::unique_ptr<CloudParticles> clouds_;
+    std::unique_ptr<Clouds> clouds_;
     std::unique_ptr<ToneMapping> toneMapping_;
 };
 

@@ -34,6 +34,7 @@ struct GuiModel {
     bool noticeIsError = false;
     ExposureReading exposure;          // what the tone mapping applied, a few frames ago
     std::optional<double> atmosphereProgress;  // 0..1 while the atmosphere's tables are recomputed
+    std::optional<double> cloudTableProgress;  // 0..1 while the cloud particle's tables are computed
 };
 
 struct GuiRequests {

@@ -13,6 +13,7 @@
 //  - every control of the epipolar sampling changes the image.
 #include "core/ExrImage.h"
 #include "core/PngImage.h"
+#include "support/CaptureRadiance.h"
 #include "support/ImageComparison.h"
 #include "support/Process.h"
 #include "support/TestPaths.h"
@@ -33,26 +34,9 @@ constexpr int kWidth = 96, kHeight = 54;
 
 std::filesystem::path captureFolder() { return std::filesystem::temp_directory_path() / "firmament-light-shafts"; }
 
-// Captures one frame at width x height (the PNG, tone mapped, and the EXR, radiance); returns the
-// EXR's RGB.
+// Captures one frame at width x height; returns the EXR's RGB (radiance).
 std::vector<float> capture(const std::string& name, std::vector<std::wstring> settings, int width = kWidth, int height = kHeight) {
-    const auto folder = captureFolder();
-    std::filesystem::create_directories(folder);
-    std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(width) + L"x" + std::to_wstring(height)};
-    for (const std::wstring& s : settings) args.insert(args.end(), {L"--set", s});
-    args.insert(args.end(), {L"--capture", (folder / (name + ".png")).wstring()});
-    const ProcessResult run = runProcess(firmamentExe(), args);
-    EXPECT_EQ(run.exitCode, 0u) << run.output;
-    if (run.exitCode != 0) return {};
-    const ExrFile file = readExr(folder / (name + ".exr"));
-    std::vector<float> rgb;
-    for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i)
-        for (int c = 0; c < 3; ++c) {
-            Imath::half h;
-            h.setBits(file.image.halfBits[i * 4 + c]);
-            rgb.push_back(static_cast<float>(h));
-        }
-    return rgb;
+    return captureRadiance(captureFolder(), name, settings, width, height);
 }
 
 // The largest difference between two frames, relative to the brighter value (above a floor).

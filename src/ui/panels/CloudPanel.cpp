@@ -7,11 +7,15 @@
 
 #include <imgui.h>
 
+#include <optional>
+
 namespace firmament::panels {
 
 void clouds(PanelContext& panel) {
     const CloudSettings& c = panel.model.state.clouds;
-    editSettings(panel, "clouds", {"showParticles"});
+    editSettings(panel, "clouds", {"showParticles", "particleDensity"});
+    if (const std::optional<double> progress = panel.model.cloudTableProgress)
+        ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
     ImGui::SeparatorText("Layer");
     editSettings(panel, "clouds", {"cloudiness", "altitude", "thickness", "speed", "densityResolution"});
     ImGui::SeparatorText("Cell grid");

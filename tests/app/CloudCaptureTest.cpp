@@ -1,0 +1,78 @@
+// The clouds from outside, in captured EXRs (radiance before tone mapping): Show particles draws
+// the field as geometry and as transparency, finite everywhere; the transparency view brightens
+// the dark terrain under it with white cloud; and every cloud control changes the picture.
+#include "support/CaptureRadiance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cwchar>
+#include <string>
+#include <vector>
+
+namespace firmament::test {
+namespace {
+
+constexpr int kWidth = 96, kHeight = 54;
+
+// One frame over the mountains from 8 km up, looking 30 degrees down, with `settings`; the
+// EXR's RGB, or empty when the run failed.
+std::vector<float> capture(const std::string& name, std::vector<std::wstring> settings) {
+    settings.insert(settings.begin(), {L"camera.position=0,8000,0", L"camera.pitch=-30", L"sun.elevation=35"});
+    return captureRadiance(std::filesystem::temp_directory_path() / "firmament-clouds", name, settings, kWidth, kHeight);
+}
+
+double mean(const std::vector<float>& v) {
+    double sum = 0.0;
+    for (float x : v) sum += x;
+    return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
+}
+
+bool allFinite(const std::vector<float>& v) {
+    for (float x : v)
+        if (!std::isfinite(x)) return false;
+    return true;
+}
+
+// The share of the frame's values that differ by more than 1%.
+double changedShare(const std::vector<float>& a, const std::vector<float>& b) {
+    if (a.size() != b.size() || a.empty()) return 0.0;
+    size_t changed = 0;
+    for (size_t i = 0; i < a.size(); ++i) changed += std::abs(a[i] - b[i]) > 0.01f * std::max(std::abs(a[i]), std::abs(b[i])) + 1e-6f;
+    return static_cast<double>(changed) / static_cast<double>(a.size());
+}
+
+TEST(CloudCapture, ShowParticlesDrawsTheFieldAsGeometryAndAsTransparency) {
+    const std::vector<float> off = capture("off", {});
+    const std::vector<float> shapes = capture("shapes", {L"clouds.showParticles=Bounding shapes"});
+    const std::vector<float> transparency = capture("transparency", {L"clouds.showParticles=Optical depth"});
+    ASSERT_FALSE(off.empty());
+    for (const auto* frame : {&shapes, &transparency}) EXPECT_TRUE(allFinite(*frame));
+    // Most of the frame is covered at the default cloudiness.
+    EXPECT_GT(changedShare(off, shapes), 0.5);
+    EXPECT_GT(changedShare(off, transparency), 0.5);
+    EXPECT_GT(changedShare(shapes, transparency), 0.5);
+    // White cloud over dark mountains: brighter on average.
+    EXPECT_GT(mean(transparency), 1.5 * mean(off));
+}
+
+TEST(CloudCapture, EveryCloudControlChangesTheParticles) {
+    const std::vector<std::wstring> base{L"clouds.showParticles=Optical depth"};
+    const std::vector<float> defaults = capture("defaults", base);
+    ASSERT_FALSE(defaults.empty());
+    const wchar_t* const changes[] = {L"clouds.cloudiness=0.4",       L"clouds.altitude=5000",         L"clouds.thickness=1400",
+                                      L"clouds.densityResolution=128", L"clouds.rings=3",               L"clouds.ringDimension=64",
+                                      L"clouds.maxLayers=1",          L"clouds.particleDistance=50000", L"clouds.particleDensity=Thresholded noise",
+                                      L"clouds.particleDensity=Pyroclastic"};
+    int index = 0;
+    for (const wchar_t* change : changes) {
+        std::vector<std::wstring> settings = base;
+        settings.push_back(change);
+        const std::vector<float> changed = capture("control-" + std::to_string(index++), settings);
+        EXPECT_TRUE(allFinite(changed));
+        EXPECT_GT(changedShare(defaults, changed), 0.02) << std::string(change, change + std::wcslen(change));
+    }
+}
+
+}  // namespace
+}  // namespace firmament::test
