@@ -144,7 +144,7 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             o.noCache = true;
         } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file" || flag == "--flight" ||
                    flag == "--record-flight" || flag == "--export-luts" || flag == "--cache-dir" || flag == "--benchmark" ||
-                   flag == "--benchmark-output") {
+                   flag == "--benchmark-output" || flag == "--generate-cloud-scattering") {
             const auto v = value();
             if (!v) return result;
             if (v->empty()) {
@@ -159,6 +159,7 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             else if (flag == "--cache-dir") o.cacheDir = std::filesystem::path(*v);
             else if (flag == "--benchmark") o.benchmark = std::filesystem::path(*v);
             else if (flag == "--benchmark-output") o.benchmarkOutput = std::filesystem::path(*v);
+            else if (flag == "--generate-cloud-scattering") o.generateCloudScattering = std::filesystem::path(*v);
             else o.stateFile = std::filesystem::path(*v);
         } else if (flag == "--set") {
             const auto v = value();
@@ -245,6 +246,11 @@ Atmosphere
   --cache-dir DIR        where computed tables are kept and reused
                          (default: %LOCALAPPDATA%\Firmament\cache)
   --no-cache             compute the tables every run; read and write no cache
+Clouds
+  --generate-cloud-scattering FILE
+                         compute the cloud particle's scattering table on the CPU
+                         (about a minute) into FILE and exit; the program reads
+                         media/clouds/particle-scattering.exr (tools/generate-cloud-scattering)
 Shaders
   --shader-dir DIR       compiled shaders (default: 'shaders' beside the program)
   --shader-source DIR    HLSL folder that F8 and file changes reload from

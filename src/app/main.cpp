@@ -4,6 +4,7 @@
 #include "app/BenchmarkPlan.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
+#include "clouds/ParticleScattering.h"
 #include "settings/State.h"
 #include "core/Error.h"
 #include "core/Log.h"
@@ -44,6 +45,21 @@ int main() {
     if (parsed.options.version) {
         std::printf("firmament %s\n", kFirmamentVersion);
         return 0;
+    }
+    if (parsed.options.generateCloudScattering) {
+        try {
+            const ParticleScatteringParameters parameters;
+            log::info("clouds: computing the particle's scattering table: " + parameters.describe());
+            const ParticleScatteringTable table = computeParticleScattering(parameters, [](double progress) {
+                log::info("clouds: scattering table " + std::to_string(static_cast<int>(progress * 100.0 + 0.5)) + "%");
+            });
+            writeParticleScattering(*parsed.options.generateCloudScattering, table);
+            log::info("clouds: wrote " + parsed.options.generateCloudScattering->string());
+            return 0;
+        } catch (const Error& e) {
+            log::error(e.what());
+            return 1;
+        }
     }
     State state;
     std::optional<FlightPath> flight;

@@ -86,7 +86,7 @@ TEST(CommandLine, UsageListsEveryOption) {
     const std::string usage = usageText();
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
                                "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
-                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--version", "--help"})
+                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 
@@ -100,6 +100,15 @@ TEST(CommandLine, AtmosphereTableOptions) {
     expectError({"--export-luts"}, "--export-luts");
     expectError({"--export-luts", ""}, "empty");
     expectError({"--no-cache=yes"}, "--no-cache");
+}
+
+TEST(CommandLine, CloudScatteringGenerator) {
+    const ParsedCommandLine p = parse({"--generate-cloud-scattering", "table.exr"});
+    ASSERT_TRUE(p.error.empty()) << p.error;
+    EXPECT_EQ(p.options.generateCloudScattering, std::filesystem::path("table.exr"));
+    EXPECT_FALSE(parse({}).options.generateCloudScattering);
+    expectError({"--generate-cloud-scattering"}, "--generate-cloud-scattering");
+    expectError({"--generate-cloud-scattering", ""}, "empty");
 }
 
 // A benchmark runs headless on WARP (unless told otherwise) and takes its views and frame
