@@ -31,6 +31,14 @@ struct ParticleTableConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(ParticleTableConstants);
 
+// The clouds' shading (clouds/shade_particles.hlsl): the atmosphere's render modes and the
+// scattering table's size.
+struct CloudShadingConstants {
+    uint4 modes;       // x: single scattering mode, y: multiple scattering mode, z: integration steps (the atmosphere's); w: unused
+    float4 scattering; // the particle scattering table's texels: x entry angles, y view azimuths, z view zeniths; w: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudShadingConstants);
+
 #ifndef __cplusplus
 // A particle as generation writes it (StructuredBuffer, 32 bytes).
 struct CloudParticle {

@@ -13,6 +13,10 @@ struct ShapeVertex {
     nointerpolation uint slot : PARTICLE;
 };
 
+// The cloud medium's extinction coefficient at density 1 (1/m): Yusov's sample's, in the range
+// of cumulus (0.01 to 0.1); all of it scattering.
+static const float kCloudExtinction = 0.07;
+
 // The ellipsoid's axes: two tangents and the planet's normal through its centre.
 void particleFrame(float3 centre, out float3 tangent, out float3 normal, out float3 bitangent) {
     normal = normalize(centre + float3(0.0, frame.planet.x, 0.0));
@@ -83,5 +87,49 @@ bool hitParticle(CloudParticle p, float3 direction, out ParticleHit hit) {
     hit.through = normalize(d);
     return hit.far > 0.0;
 }
+
+// The distance from the camera to the scene at this pixel (far away where nothing was drawn).
+float sceneDistance(Texture2D<float> depthBuffer, float4 position) {
+    float depth = depthBuffer.Load(int3(position.xy, 0));
+    if (depth <= 0.0) return 3.0e38;
+    float2 ndc = float2(position.x * frame.screen.z * 2.0 - 1.0, 1.0 - position.y * frame.screen.w * 2.0);
+    float4 world = mul(frame.inverseViewProjection, float4(ndc, depth, 1.0));
+    return length(world.xyz / world.w - frame.cameraPosition.xyz);
+}
+
+#ifdef FIRMAMENT_OPTICAL_DEPTH_TABLE_HLSLI
+// The particle's optical depth over `length` metres of its chord (Yusov 2014): the table's mean
+// density along the whole chord, the particle's noise turned by its azimuth, times the length in
+// front of the camera and the scene, the particle's density and the extinction.
+float particleOpticalDepth(CloudParticle p, ParticleHit hit, float length, Texture3D<float> table, SamplerState linearWrap) {
+    float4 u = opticalDepthCoordinates(hit.entry, hit.through);
+    u.y += p.shape.z / (2.0 * kTablePi);
+    return sampleOpticalDepth(table, linearWrap, u, field.tableSizes) * length * p.shape.y * kCloudExtinction;
+}
+
+// A pixel of a particle's quad: the particle, the view ray, its hit, where the visible stretch
+// starts (m from the camera) and the stretch's opacity 1 - e^(-tau); false where the ray misses
+// the particle, or the camera or the scene hides all of it.
+struct ParticlePixel {
+    CloudParticle particle;
+    float3 direction;
+    ParticleHit hit;
+    float start;
+    float opacity;
+};
+
+bool particlePixel(ShapeVertex input, Texture2D<float> depthBuffer, Texture3D<float> table, SamplerState linearWrap, out ParticlePixel px) {
+    px.particle = particles[input.slot];
+    px.direction = pixelDirection(input.position);
+    px.start = 0.0;
+    px.opacity = 0.0;
+    if (!hitParticle(px.particle, px.direction, px.hit)) return false;
+    px.start = max(px.hit.near, 0.0);
+    float end = min(px.hit.far, sceneDistance(depthBuffer, input.position));
+    if (end <= px.start) return false;
+    px.opacity = 1.0 - exp(-particleOpticalDepth(px.particle, px.hit, end - px.start, table, linearWrap));
+    return true;
+}
+#endif
 
 #endif

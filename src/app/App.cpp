@@ -48,6 +48,7 @@ const Options& checkedOptions(const Options& options) {
 TableStorage tableStorage(const Options& options) {
     TableStorage storage;
     storage.exportFolder = options.exportLuts;
+    storage.mediaFolder = executableFolder() / "media";
     if (options.noCache) return storage;
     if (options.cacheDir) {
         storage.cacheFolder = options.cacheDir;

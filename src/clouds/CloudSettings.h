@@ -21,6 +21,9 @@ inline constexpr std::array<std::string_view, 3> kParticleDensityMethodNames{"Ra
 inline constexpr std::array<std::string_view, 4> kCloudDensityResolutionNames{"128", "256", "512", "1024"};
 
 struct CloudSettings {
+    // "Enable clouds": the particles shaded from their tables and blended over the scene (with
+    // Yusov 2013's atmosphere drawn alone). Off by default while the clouds are being built.
+    bool enabled = false;
     // "Show particles": each particle drawn over the scene as its bounding ellipsoid lit by the
     // sun, or white with the transparency of its optical depth (docs/clouds.md).
     ParticleView showParticles = ParticleView::Off;
@@ -40,6 +43,7 @@ struct CloudSettings {
     int effectiveRingDimension() const { return ringDimension / 4 * 4; }
 
     void visit(SettingsVisitor& v) {
+        v.field("enabled", enabled, "Enable clouds");
         v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
         v.choice("particleDensity", particleDensity, kParticleDensityMethodNames, "Particle density");
         int resolutionIndex = 0;

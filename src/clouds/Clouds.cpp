@@ -1,5 +1,6 @@
 #include "clouds/Clouds.h"
 
+#include "core/Log.h"
 #include "gpu/CommonStates.h"
 #include "render/FrameContext.h"
 
@@ -8,6 +9,8 @@ namespace firmament {
 namespace {
 const ShaderKey kOpticalDepthVertexShader{"clouds/optical_depth_view.hlsl", "vs_main", "vs_5_0", {}};
 const ShaderKey kOpticalDepthPixelShader{"clouds/optical_depth_view.hlsl", "ps_main", "ps_5_0", {}};
+const ShaderKey kShadeVertexShader{"clouds/shade_particles.hlsl", "vs_main", "vs_5_0", {}};
+const ShaderKey kShadePixelShader{"clouds/shade_particles.hlsl", "ps_main", "ps_5_0", {}};
 }  // namespace
 
 Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
@@ -16,7 +19,8 @@ Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
       particles_(device),
       linearWrap_(states::linearWrap(device)),
       premultiplied_(states::premultipliedAlpha(device)),
-      noCulling_(states::cullNone(device)) {}
+      noCulling_(states::cullNone(device)),
+      shadingConstants_(device) {}
 
 ParticleTableParameters Clouds::tableParameters(const CloudSettings& settings) {
     ParticleTableParameters p;
@@ -41,18 +45,73 @@ std::optional<double> Clouds::tableProgress() const {
 }
 
 void Clouds::renderGeometry(FrameContext& frame, const CloudSettings& settings) {
-    if (settings.showParticles == ParticleView::Off) return;
+    if (settings.showParticles == ParticleView::Off && !settings.enabled) return;
     const OpticalDepthTableSize& n = tableParameters(settings).opticalDepth;
     particles_.update(frame, settings,
                       glm::vec4(static_cast<float>(n.entryZenith), static_cast<float>(n.entryAzimuth), static_cast<float>(n.directionZenith),
                                 static_cast<float>(n.directionAzimuth)));
     if (settings.showParticles == ParticleView::BoundingShapes) particles_.drawBoundingShapes(frame);
     else updateTables(frame, settings, frame.finishWorkNow);
+    if (settings.enabled && settings.showParticles == ParticleView::Off) scatteringTable(frame.device);
 }
 
-void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& settings) {
-    if (settings.showParticles != ParticleView::OpticalDepth) return;
-    if (const ParticleTablePrecomputation* tables = tables_.current()) drawOpticalDepth(frame, tables->tables());
+// Show particles replaces the shaded clouds with its view of them.
+void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& settings, const ScatteringLookup* atmosphere) {
+    const ParticleTablePrecomputation* tables = tables_.current();
+    if (!tables) return;
+    if (settings.showParticles == ParticleView::OpticalDepth) drawOpticalDepth(frame, tables->tables());
+    else if (settings.showParticles == ParticleView::Off && settings.enabled && atmosphere && atmosphere->ready)
+        drawShaded(frame, tables->tables(), *atmosphere);
+}
+
+const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
+    if (scattering_.texture) return scattering_;
+    const std::filesystem::path path = storage_.mediaFolder / "clouds" / "particle-scattering.exr";
+    const ParticleScatteringTable table = readParticleScattering(path, scatteringParameters_);
+    const ParticleScatteringParameters& p = table.parameters;
+    std::vector<float> texels(table.single.size() * 2);
+    for (size_t k = 0; k < table.single.size(); ++k) {
+        texels[2 * k] = table.single[k];
+        texels[2 * k + 1] = table.multiple[k];
+    }
+    scattering_ = createTexture3D(device, p.entryAngles, p.viewAzimuths, p.viewZeniths, DXGI_FORMAT_R32G32_FLOAT, D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11DeviceContext> context;
+    device->GetImmediateContext(&context);
+    context->UpdateSubresource(scattering_.texture.Get(), 0, nullptr, texels.data(), static_cast<UINT>(p.entryAngles * 8),
+                               static_cast<UINT>(p.entryAngles * p.viewAzimuths * 8));
+    log::info("clouds: particle scattering table read from " + path.string());
+    return scattering_;
+}
+
+// Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the
+// scene's depth.
+void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, const ScatteringLookup& atmosphere) {
+    ID3D11DeviceContext* context = frame.context;
+    const Texture3D& scattering = scatteringTable(frame.device);
+    auto pass = frame.profiler.scope("Clouds: shading");
+    gpu::CloudShadingConstants c{};
+    c.modes = glm::uvec4(static_cast<unsigned>(atmosphere.singleMode), static_cast<unsigned>(atmosphere.multipleMode),
+                         static_cast<unsigned>(atmosphere.integrationSteps), 0u);
+    c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
+                             static_cast<float>(scatteringParameters_.viewZeniths), 0.0f);
+    shadingConstants_.update(context, c);
+    ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
+    context->OMSetRenderTargets(1, &hdr, nullptr);
+    context->OMSetBlendState(premultiplied_.Get(), nullptr, 0xffffffffu);
+    context->OMSetDepthStencilState(nullptr, 0);
+    context->RSSetState(noCulling_.Get());
+    ID3D11Buffer* buffers[] = {atmosphere.atmosphere, shadingConstants_.get()};
+    context->PSSetConstantBuffers(2, 2, buffers);
+    ID3D11ShaderResourceView* extra[] = {tables.opticalDepth.srv.Get(), frame.targets.depth().srv.Get(), scattering.srv.Get(),
+                                         atmosphere.netDensity, atmosphere.singleScattering, atmosphere.highOrderScattering,
+                                         atmosphere.multipleScattering, atmosphere.ambientLight};
+    context->PSSetShaderResources(2, 8, extra);
+    ID3D11SamplerState* samplers[] = {linearWrap_.Get(), atmosphere.linearClamp};
+    context->PSSetSamplers(0, 2, samplers);
+    particles_.drawInstanced(frame, kShadeVertexShader, kShadePixelShader);
+    ID3D11ShaderResourceView* none[8] = {};
+    context->PSSetShaderResources(2, 8, none);
+    context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
 }
 
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the

@@ -3,6 +3,8 @@
 // the particles generated and sorted on the GPU each frame, with the views of them that
 // "Show particles" selects. The renderer's one entry point for the clouds.
 #include "clouds/CloudParticles.h"
+#include "atmosphere/ScatteringLookup.h"
+#include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
 #include "tables/CachedTables.h"
 
@@ -20,8 +22,11 @@ public:
     // bounding shapes, which then take the aerial perspective like the terrain). Nothing when
     // Show particles is off.
     void renderGeometry(FrameContext& frame, const CloudSettings& settings);
-    // After the sky and the aerial perspective: the translucent views over the lit scene.
-    void renderTranslucent(FrameContext& frame, const CloudSettings& settings);
+    // After the sky and the aerial perspective: the shaded clouds (through `atmosphere`, Yusov
+    // 2013's tables, when they are drawn alone; else none), or the translucent view of the
+    // particles, over the lit scene. The particle scattering table is read from the storage's
+    // media folder the first time; throws Error naming the file when it cannot be.
+    void renderTranslucent(FrameContext& frame, const CloudSettings& settings, const ScatteringLookup* atmosphere);
 
     // The particle tables for `settings`, computed or loaded now (tests, benchmarks).
     const ParticleTablePrecomputation& tables(FrameContext& frame, const CloudSettings& settings);
@@ -34,6 +39,8 @@ public:
 private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);
     void drawOpticalDepth(FrameContext& frame, const ParticleTables& tables);
+    void drawShaded(FrameContext& frame, const ParticleTables& tables, const ScatteringLookup& atmosphere);
+    const Texture3D& scatteringTable(ID3D11Device* device);
 
     TableStorage storage_;
     CachedTables<ParticleTablePrecomputation> tables_;
@@ -41,6 +48,9 @@ private:
     ComPtr<ID3D11SamplerState> linearWrap_;
     ComPtr<ID3D11BlendState> premultiplied_;
     ComPtr<ID3D11RasterizerState> noCulling_;
+    ConstantBuffer<gpu::CloudShadingConstants> shadingConstants_;
+    ParticleScatteringParameters scatteringParameters_;
+    Texture3D scattering_;  // R32G32_FLOAT: single scattering (phase excluded), multiple
 };
 
 }  // namespace firmament

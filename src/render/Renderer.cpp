@@ -79,8 +79,14 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         atmosphere_->renderSky(frame, state.atmosphere);
         atmosphere_->renderAerialPerspective(frame, state.atmosphere);
     }
-    // 6b. The particles' translucent view over the lit scene.
-    clouds_->renderTranslucent(frame, state.clouds);
+    // 6b. The clouds, shaded through Yusov 2013's tables when they are drawn alone (or the
+    //     particles' translucent view), over the lit scene.
+    {
+        const AtmosphereSettings& a = state.atmosphere;
+        const bool yusovAlone = a.model == AtmosphereModel::Yusov2013 && a.comparison == ModelComparison::None && scattering;
+        const ScatteringLookup lookup = yusovAlone && state.clouds.enabled ? atmosphere_->scatteringLookup(frame, a) : ScatteringLookup{};
+        clouds_->renderTranslucent(frame, state.clouds, yusovAlone ? &lookup : nullptr);
+    }
     // 7. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);
     // 8. The GUI over the output.

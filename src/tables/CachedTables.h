@@ -25,6 +25,7 @@ namespace firmament {
 struct TableStorage {
     std::optional<std::filesystem::path> cacheFolder;   // none: no cache
     std::optional<std::filesystem::path> exportFolder;  // --export-luts: every new table set is written here
+    std::filesystem::path mediaFolder = "media";        // tables shipped with the program (the cloud particle's scattering)
 };
 
 template <typename Computation>

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cwchar>
 #include <string>
 #include <vector>
@@ -71,6 +73,59 @@ TEST(CloudCapture, EveryCloudControlChangesTheParticles) {
         const std::vector<float> changed = capture("control-" + std::to_string(index++), settings);
         EXPECT_TRUE(allFinite(changed));
         EXPECT_GT(changedShare(defaults, changed), 0.02) << std::string(change, change + std::wcslen(change));
+    }
+}
+
+// The frame's mean red over blue, where the clouds are (the top third of the frame from below).
+double redOverBlueAbove(const std::vector<float>& rgb) {
+    double red = 0.0, blue = 0.0;
+    for (int y = 0; y < kHeight / 3; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            red += rgb[(static_cast<size_t>(y) * kWidth + x) * 3];
+            blue += rgb[(static_cast<size_t>(y) * kWidth + x) * 3 + 2];
+        }
+    return red / std::max(blue, 1e-9);
+}
+
+TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
+    const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=25", L"clouds.cloudiness=1"};
+    auto with = [&](std::vector<std::wstring> extra) {
+        std::vector<std::wstring> all = below;
+        all.insert(all.end(), extra.begin(), extra.end());
+        return all;
+    };
+    const std::vector<float> clearNoon = capture("clear-noon", with({L"sun.elevation=50"}));
+    const std::vector<float> cloudyNoon = capture("cloudy-noon", with({L"sun.elevation=50", L"clouds.enabled=on"}));
+    const std::vector<float> cloudySunset = capture("cloudy-sunset", with({L"sun.elevation=3", L"clouds.enabled=on"}));
+    ASSERT_FALSE(clearNoon.empty());
+    EXPECT_TRUE(allFinite(cloudyNoon));
+    EXPECT_TRUE(allFinite(cloudySunset));
+    // Overcast: white-grey cloud instead of the blue sky overhead.
+    const double clear = redOverBlueAbove(clearNoon), noon = redOverBlueAbove(cloudyNoon), sunset = redOverBlueAbove(cloudySunset);
+    std::printf("red / blue overhead: clear %.3f, clouds at noon %.3f, clouds at sunset %.3f\n", clear, noon, sunset);
+    EXPECT_GT(noon, clear * 1.3);
+    // The sun's light through the long path at sunset: the clouds redder than at noon.
+    EXPECT_GT(sunset, noon * 1.3);
+}
+
+TEST(CloudCapture, ShadedCloudsAreFiniteFromTheGroundToOrbitAtNoonSunsetAndNight) {
+    const wchar_t* const places[] = {L"camera.position=0,200,0", L"camera.position=0,3000,0", L"camera.position=0,9000,0",
+                                     L"camera.position=0,400000,0"};
+    const wchar_t* const suns[] = {L"sun.elevation=60", L"sun.elevation=2", L"sun.elevation=-10"};
+    int index = 0;
+    for (const wchar_t* place : places)
+        for (const wchar_t* sun : suns) {
+            const std::vector<float> frame = capture("sweep-" + std::to_string(index++), {place, sun, L"camera.pitch=-10", L"clouds.enabled=on"});
+            EXPECT_TRUE(allFinite(frame)) << std::string(place, place + std::wcslen(place)) << " " << std::string(sun, sun + std::wcslen(sun));
+            EXPECT_FALSE(frame.empty());
+        }
+    // Every control at its extremes, inside the layer.
+    const wchar_t* const extremes[] = {L"clouds.altitude=10000", L"clouds.thickness=100", L"clouds.thickness=1500", L"clouds.maxLayers=16",
+                                       L"clouds.rings=1", L"clouds.ringDimension=16", L"clouds.particleDistance=500000", L"clouds.speed=2",
+                                       L"clouds.particleDensity=Pyroclastic"};
+    for (const wchar_t* extreme : extremes) {
+        const std::vector<float> frame = capture("extreme-" + std::to_string(index++), {extreme, L"clouds.enabled=on", L"clouds.cloudiness=1"});
+        EXPECT_TRUE(allFinite(frame)) << std::string(extreme, extreme + std::wcslen(extreme));
     }
 }
 

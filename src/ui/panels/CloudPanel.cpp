@@ -13,6 +13,10 @@ namespace firmament::panels {
 
 void clouds(PanelContext& panel) {
     const CloudSettings& c = panel.model.state.clouds;
+    editSettings(panel, "clouds", {"enabled"});
+    const AtmosphereSettings& a = panel.model.state.atmosphere;
+    if (c.enabled && (a.model != AtmosphereModel::Yusov2013 || a.comparison != ModelComparison::None))
+        ImGui::TextDisabled("The clouds are lit by the Yusov 2013 model drawn alone");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
     if (const std::optional<double> progress = panel.model.cloudTableProgress)
         ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
@@ -25,7 +29,6 @@ void clouds(PanelContext& panel) {
     ImGui::TextDisabled("%lld cells; inner cells %.0f m, outer %.0f m; room for %u particles",
                         CloudGrid::cellCount(c.rings, c.effectiveRingDimension()), grid.cellSize(0), grid.cellSize(c.rings - 1),
                         cloudParticleCapacity(c));
-    ImGui::TextDisabled("The clouds' shading comes with their look-up tables (docs/clouds.md)");
 }
 
 }  // namespace firmament::panels

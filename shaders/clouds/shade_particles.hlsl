@@ -1,0 +1,92 @@
+// The clouds' shading (Yusov 2014, "Pre-computed lighting"; docs/clouds.md, "Shading"): each
+// particle, back to front, as the light it sends to the camera through the atmosphere, blended
+// over the lit scene with premultiplied alpha.
+//  - Opacity: 1 - e^(-tau), tau from the optical depth table along the view ray, cut at the
+//    camera and at the scene's depth.
+//  - The light at the particle: the sun's irradiance times the atmosphere's transmittance from the
+//    particle to the sun (Yusov 2013's net density table), so that clouds at sunset glow red; the
+//    sky's ambient irradiance there (the ambient sky light table).
+//  - The particle's radiance: from the scattering table of the reference sphere, looked up with
+//    the view ray's entry point and direction against the sun: single scattering times the
+//    Henyey-Greenstein phase function for the actual angle, plus multiple scattering; plus the
+//    ambient light scattered by a white cloud (E_sky / pi, brighter at the particle's top).
+//  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
+//    the atmosphere's transmittance and in-scattering (its render modes), so that the cloud
+//    stands in the haze, and the light scattered behind the cloud is hidden by its opacity:
+//      C = L_behind (1 - a) + a (L_in(camera -> cloud) + T(camera -> cloud) L_cloud).
+#include "atmosphere/atmosphere_structures.hlsli"
+#include "clouds/optical_depth_table.hlsli"
+#include "clouds/particle_shape.hlsli"
+
+cbuffer AtmosphereBuffer : register(b2) { AtmosphereConstants atmosphere; };
+cbuffer CloudShadingBuffer : register(b3) { CloudShadingConstants shading; };
+
+Texture3D<float> opticalDepthTable : register(t2);
+Texture2D<float> sceneDepth : register(t3);
+Texture3D<float2> scatteringTable : register(t4);  // x single scattering (phase excluded), y multiple
+Texture2D<float4> netDensityLut : register(t5);
+Texture3D<float4> singleScatteringLut : register(t6);
+Texture3D<float4> highOrderScatteringLut : register(t7);
+Texture3D<float4> multipleScatteringLut : register(t8);
+Texture2D<float4> ambientLightLut : register(t9);
+SamplerState linearWrap : register(s0);
+SamplerState linearClamp : register(s1);
+
+#include "atmosphere/yusov/view_ray.hlsli"
+#include "clouds/particle_lighting.hlsli"
+
+ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) { return shapeVertex(vertexId, instance); }
+
+// The camera's ray through the atmosphere up to `distance` along `direction` (from the camera).
+ViewRay cameraRay(float3 direction, float distance, out bool inAtmosphere) {
+    float3 earthCentre = float3(0.0, -atmosphere.earth.x, 0.0);
+    ViewRay ray;
+    ray.camera = frame.cameraPosition.xyz;
+    ray.start = frame.cameraPosition.xyz - earthCentre;
+    ray.viewDir = direction;
+    ray.offset = 0.0;
+    ray.endsAtBoundary = false;
+    inAtmosphere = clipRayToAtmosphere(atmosphere, ray.start, direction, ray.offset);
+    ray.hitsGround = inAtmosphere && rayHitsGround(atmosphere, ray.start, direction);
+    float toEnd = inAtmosphere ? rayLengthInAtmosphere(atmosphere, ray.start, direction, ray.hitsGround) : 0.0;
+    ray.length = clamp(distance - ray.offset, 0.0, toEnd);
+    inAtmosphere = inAtmosphere && ray.length > 0.0;
+    return ray;
+}
+
+float4 ps_main(ShapeVertex input) : SV_Target {
+    ParticlePixel px;
+    if (!particlePixel(input, sceneDepth, opticalDepthTable, linearWrap, px) || px.opacity < 1e-4) discard;
+    CloudParticle p = px.particle;
+    ParticleHit hit = px.hit;
+    float3 direction = px.direction;
+    float start = px.start, opacity = px.opacity;
+
+    // The light at the particle's centre.
+    float3 sun = frame.directionToSun.xyz;
+    float3 fromCentre = p.centre.xyz + float3(0.0, atmosphere.earth.x, 0.0);
+    float altitude = length(fromCentre) - atmosphere.earth.x;
+    float cosSunZenith = dot(normalize(fromCentre), sun);
+    float3 sunLight = sunTransmittance(atmosphere, netDensityLut, linearClamp, altitude, cosSunZenith);
+    float width = atmosphere.netDensityLutSize.z;
+    float3 skyLight = ambientLightLut.SampleLevel(linearClamp, float2(unitToTexture(saturate(cosSunZenith * 0.5 + 0.5), width), 0.5), 0).rgb;
+
+    // The sun in the particle's unit-sphere space.
+    float3 l = normalize(float3(dot(sun, hit.tangent) / hit.scale.x, dot(sun, hit.normal) / hit.scale.y, dot(sun, hit.bitangent) / hit.scale.z));
+    float2 scattered = particleScattering(hit.entry, hit.through, l);
+    float phase = henyeyGreenstein(dot(direction, sun), kDropletAsymmetry);
+    // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
+    float height = clamp(hit.entry.y, -1.0, 1.0);
+    float3 radiance = sunLight * (scattered.x * phase + scattered.y) + skyLight * ((0.6 + 0.4 * height) / kTablePi);
+
+    // Through the atmosphere from the camera to where the ray enters the particle.
+    bool inAtmosphere;
+    ViewRay ray = cameraRay(direction, start, inAtmosphere);
+    float3 transmittance = 1.0, inscattered = 0.0;
+    if (inAtmosphere) {
+        transmittance = transmittanceTo(ray, ray.length);
+        inscattered = scatteringAlongRay(ray, sun, shading.modes.x, shading.modes.y, int(shading.modes.z));
+    }
+    float3 light = frame.sunIrradiance.rgb * (inscattered + transmittance * radiance);
+    return float4(light * opacity, opacity);
+}

@@ -1,0 +1,134 @@
+// The clouds' shading functions on the WARP device (clouds/particle_lighting.hlsli,
+// optical_depth_table.hlsli), probed at random rays against the CPU: the scattering table looked
+// up with a ray's entry point, direction and the sun against the shipped table read on the CPU
+// and interpolated there; the optical depth table's mean density along a chord against a fine
+// CPU march through the same noise, away from texel centres.
+#include "WarpDevice.h"
+#include "clouds/CloudStructures.h"
+#include "clouds/OpticalDepthTable.h"
+#include "clouds/ParticleScattering.h"
+#include "clouds/ParticleTables.h"
+#include "gpu/Buffers.h"
+#include "gpu/CommonStates.h"
+#include "gpu/ConstantBuffer.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+
+namespace firmament::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The CPU twin of particleScattering()'s coordinates (u0 entry angle, u1 azimuth, u2 zenith).
+glm::dvec3 scatteringCoordinates(glm::dvec3 s, glm::dvec3 d, glm::dvec3 l) {
+    const glm::dvec3 z = -s;
+    const glm::dvec3 across = l - glm::dot(l, z) * z;
+    const glm::dvec3 x = glm::normalize(across), y = glm::cross(z, x);
+    return {std::acos(std::clamp(glm::dot(s, l), -1.0, 1.0)) / kPi, std::atan2(glm::dot(d, y), glm::dot(d, x)) / (2.0 * kPi) + 0.5,
+            std::acos(std::clamp(glm::dot(d, z), 0.0, 1.0)) / (0.5 * kPi)};
+}
+
+// Trilinear in the table, the azimuth wrapping, the others clamped to their texel centres.
+glm::dvec2 sampleTable(const ParticleScatteringTable& t, glm::dvec3 u) {
+    const ParticleScatteringParameters& p = t.parameters;
+    const double cx = std::clamp(u.x * p.entryAngles - 0.5, 0.0, p.entryAngles - 1.0), cz = std::clamp(u.z * p.viewZeniths - 0.5, 0.0, p.viewZeniths - 1.0);
+    const double cy = u.y * p.viewAzimuths - 0.5;
+    const int x0 = std::min(static_cast<int>(cx), p.entryAngles - 2), z0 = std::min(static_cast<int>(cz), p.viewZeniths - 2);
+    const int yFloor = static_cast<int>(std::floor(cy));
+    const double fx = cx - x0, fy = cy - yFloor, fz = cz - z0;
+    glm::dvec2 value(0.0);
+    for (int corner = 0; corner < 8; ++corner) {
+        const int bx = corner & 1, by = (corner >> 1) & 1, bz = corner >> 2;
+        const int y = ((yFloor + by) % p.viewAzimuths + p.viewAzimuths) % p.viewAzimuths;
+        const double w = (bx ? fx : 1.0 - fx) * (by ? fy : 1.0 - fy) * (bz ? fz : 1.0 - fz);
+        value += w * glm::dvec2(t.single[t.index(x0 + bx, y, z0 + bz)], t.multiple[t.index(x0 + bx, y, z0 + bz)]);
+    }
+    return value;
+}
+
+class CloudShadingTest : public WarpDevice {};
+
+TEST_F(CloudShadingTest, TheShadersLookUpBothTablesAsTheCpuDoes) {
+    // The shipped scattering table, on the GPU and on the CPU.
+    const ParticleScatteringParameters sp;
+    const ParticleScatteringTable table = readParticleScattering(executableFolder() / "media" / "clouds" / "particle-scattering.exr", sp);
+    std::vector<float> texels(table.single.size() * 2);
+    for (size_t k = 0; k < table.single.size(); ++k) {
+        texels[2 * k] = table.single[k];
+        texels[2 * k + 1] = table.multiple[k];
+    }
+    Texture3D scattering = createTexture3D(device(), sp.entryAngles, sp.viewAzimuths, sp.viewZeniths, DXGI_FORMAT_R32G32_FLOAT, D3D11_BIND_SHADER_RESOURCE);
+    context()->UpdateSubresource(scattering.texture.Get(), 0, nullptr, texels.data(), sp.entryAngles * 8, sp.entryAngles * sp.viewAzimuths * 8);
+    // The optical depth table at the program's size.
+    ParticleTableParameters tp;
+    ParticleTablePrecomputation optical(device(), tp);
+    optical.runAll(context(), *productShaderLibrary);
+    const OpticalDepthTableSize& n = tp.opticalDepth;
+
+    std::mt19937 random(21);
+    std::normal_distribution<double> normal;
+    auto unit = [&] { return glm::normalize(glm::dvec3(normal(random), normal(random), normal(random))); };
+    const int count = 512;
+    std::vector<glm::vec4> probes;
+    std::vector<glm::dvec3> s(count), d(count), l(count);
+    for (int k = 0; k < count; ++k) {
+        s[k] = unit();
+        do d[k] = unit();
+        while (glm::dot(d[k], -s[k]) < 0.05);
+        do l[k] = unit();
+        while (std::abs(glm::dot(l[k], s[k])) > 0.999);
+        for (const glm::dvec3& v : {s[k], d[k], l[k]}) probes.emplace_back(glm::vec3(v), 0.0f);
+    }
+    const StructuredBuffer input = [&] {
+        return createStructuredBuffer(device(), static_cast<unsigned>(probes.size()), sizeof(glm::vec4), probes.data(), "probes");
+    }();
+    const StructuredBuffer output = createStructuredBuffer(device(), count, sizeof(glm::vec4), nullptr, "probe results");
+    ConstantBuffer<gpu::CloudFieldConstants> field(device());
+    gpu::CloudFieldConstants fc{};
+    fc.tableSizes = glm::vec4(n.entryZenith, n.entryAzimuth, n.directionZenith, n.directionAzimuth);
+    field.update(context(), fc);
+    ConstantBuffer<gpu::CloudShadingConstants> shading(device());
+    gpu::CloudShadingConstants sc{};
+    sc.scattering = glm::vec4(sp.entryAngles, sp.viewAzimuths, sp.viewZeniths, 0.0f);
+    shading.update(context(), sc);
+    ID3D11Buffer* buffers[4] = {nullptr, field.get(), nullptr, shading.get()};
+    context()->CSSetConstantBuffers(0, 4, buffers);
+    ID3D11ShaderResourceView* inputs[6] = {nullptr, nullptr, optical.tables().opticalDepth.srv.Get(), nullptr, scattering.srv.Get(), input.srv.Get()};
+    context()->CSSetShaderResources(0, 6, inputs);
+    const auto sampler = states::linearWrap(device());
+    context()->CSSetSamplers(0, 1, sampler.GetAddressOf());
+    context()->CSSetUnorderedAccessViews(0, 1, output.uav.GetAddressOf(), nullptr);
+    context()->CSSetShader(testShaderLibrary->computeShader({"clouds/lighting_probe.hlsl", "main", "cs_5_0", {}}), nullptr, 0);
+    context()->Dispatch(count / 64, 1, 1);
+    ID3D11UnorderedAccessView* noUav = nullptr;
+    context()->CSSetUnorderedAccessViews(0, 1, &noUav, nullptr);
+    const std::vector<std::uint8_t> bytes = readBuffer(device(), context(), output.buffer.Get());
+    std::vector<glm::vec4> results(count);
+    std::memcpy(results.data(), bytes.data(), count * sizeof(glm::vec4));
+
+    double worstScattering = 0.0, densityError = 0.0, worstDensity = 0.0;
+    for (int k = 0; k < count; ++k) {
+        const glm::dvec2 expected = sampleTable(table, scatteringCoordinates(s[k], d[k], l[k]));
+        // The hardware's 8-bit filter weights: within 1% of the larger neighbour, and of the table's scale.
+        worstScattering = std::max(worstScattering, std::abs(results[k].x - expected.x) / (std::abs(expected.x) + 1e-3));
+        worstScattering = std::max(worstScattering, std::abs(results[k].y - expected.y) / (std::abs(expected.y) + 1e-3));
+        const double march = meanChordDensity(TableRay{glm::vec3(s[k]), glm::vec3(d[k])}, 512, ParticleDensityMethod::RadialNoise);
+        densityError += std::abs(results[k].z - march);
+        worstDensity = std::max(worstDensity, std::abs(results[k].z - march));
+    }
+    std::printf("scattering: worst relative %.4f; mean density: mean error %.4f, worst %.4f\n", worstScattering, densityError / count, worstDensity);
+    // Measured: 0.4%; 0.001 mean and 0.012 worst.
+    EXPECT_LT(worstScattering, 0.01);
+    EXPECT_LT(densityError / count, 0.005);
+    EXPECT_LT(worstDensity, 0.05);
+}
+
+}  // namespace
+}  // namespace firmament::test
