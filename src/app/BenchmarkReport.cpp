@@ -79,6 +79,8 @@ json benchmarkReport(const BenchmarkPlan& plan, const std::vector<ScenarioResult
         State state = r.scenario->state;
         json passes = json::array();
         for (const PassResult& p : r.passes) passes.push_back({{"name", p.name}, {"gpu", statisticsJson(p.time)}});
+        json counts = json::object();
+        for (const auto& [name, value] : r.counts) counts[name] = value;
         scenarios.push_back({{"name", r.scenario->name},
                              {"view", r.scenario->view},
                              {"variant", r.scenario->variant},
@@ -86,6 +88,7 @@ json benchmarkReport(const BenchmarkPlan& plan, const std::vector<ScenarioResult
                              {"frame", {{"gpu", statisticsJson(r.frameGpu)}, {"wall", statisticsJson(r.frameWall)}}},
                              {"passes", passes},
                              {"disjointFrames", r.disjointFrames},
+                             {"counts", counts},
                              {"settings", stateToJson(state)}});
     }
     report["scenarios"] = scenarios;
@@ -126,6 +129,8 @@ std::string benchmarkTable(const BenchmarkPlan& plan, const std::vector<Scenario
         for (const std::string& name : passes)
             if (const PassResult* p = findPass(r, name); p && name != "Frame")
                 out += "    " + name + std::string(name.size() < 30 ? 30 - name.size() : 1, ' ') + format("%10.3f", p->time.medianMs) + "\n";
+        for (const auto& [name, value] : r.counts)
+            out += "    " + name + std::string(name.size() < 30 ? 30 - name.size() : 1, ' ') + format("%10.0f", value) + "\n";
     }
     const std::vector<RatioResult> ratios = benchmarkRatios(plan, results);
     if (!ratios.empty()) out += "\nRatios (numerator / denominator, medians):\n";

@@ -33,6 +33,7 @@ struct ScenarioResult {
     TimeStatistics frameWall;          // CPU clock from the frame's start until the GPU finished it
     std::vector<PassResult> passes;    // in frame order
     unsigned long long disjointFrames = 0;  // frames whose timestamps were unreliable, left out
+    std::vector<std::pair<std::string, double>> counts;  // what the techniques counted in the last frame (cloud particles, ...)
 };
 
 struct BenchmarkInfo {

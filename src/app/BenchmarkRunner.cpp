@@ -46,6 +46,7 @@ BenchmarkRun runBenchmark(Renderer& renderer, ID3D11DeviceContext* context, cons
             if (t.name == "Frame") result.frameGpu = timeStatistics(t.samplesMs);
             else result.passes.push_back({t.name, timeStatistics(t.samplesMs)});
         }
+        result.counts = renderer.counts(scenario.state);
         run.results.push_back(std::move(result));
     }
     // Last, so that its minute of work does not disturb the frames' measurements.

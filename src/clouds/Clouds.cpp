@@ -2,7 +2,11 @@
 
 #include "core/Log.h"
 #include "gpu/CommonStates.h"
+#include "gpu/Readback.h"
 #include "render/FrameContext.h"
+
+#include <algorithm>
+#include <cstring>
 
 namespace firmament {
 
@@ -37,6 +41,26 @@ void Clouds::updateTables(FrameContext& frame, const CloudSettings& settings, bo
 const ParticleTablePrecomputation& Clouds::tables(FrameContext& frame, const CloudSettings& settings) {
     updateTables(frame, settings, true);
     return *tables_.current();
+}
+
+TableTiming Clouds::timeTables(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, const CloudSettings& settings,
+                               const std::filesystem::path& scratch) {
+    const ParticleTableParameters p = tableParameters(settings);
+    return firmament::timeTables(
+        "Cloud particle (optical depth)", particleTableKey(p, shaders), [&] { return std::make_unique<ParticleTablePrecomputation>(device, p); }, device,
+        context, shaders, scratch);
+}
+
+std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device, ID3D11DeviceContext* context) {
+    const auto read = [&](ID3D11Buffer* arguments) {
+        const std::vector<std::uint8_t> bytes = readBuffer(device, context, arguments);
+        unsigned values[8] = {};
+        std::memcpy(values, bytes.data(), std::min(bytes.size(), sizeof(values)));
+        return static_cast<double>(values[3]);
+    };
+    const double cells = read(particles_.validCells().arguments()), generated = read(particles_.particleArguments());
+    const double capacity = static_cast<double>(particles_.capacity());
+    return {{"cloud valid cells", cells}, {"cloud particles", std::min(generated, capacity)}, {"cloud particles over capacity", std::max(generated - capacity, 0.0)}};
 }
 
 std::optional<double> Clouds::tableProgress() const {

@@ -7,6 +7,7 @@
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
 #include "tables/CachedTables.h"
+#include "tables/TableTiming.h"
 
 #include <d3d11.h>
 
@@ -35,6 +36,11 @@ public:
     std::optional<double> tableProgress() const;
 
     static ParticleTableParameters tableParameters(const CloudSettings& settings);
+    // The benchmark's records: the particle tables computed against loaded from a cache in
+    // `scratch`; the last frame's valid cells, particles and particles over the capacity.
+    TableTiming timeTables(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, const CloudSettings& settings,
+                           const std::filesystem::path& scratch);
+    std::vector<std::pair<std::string, double>> counts(ID3D11Device* device, ID3D11DeviceContext* context);
 
 private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);

@@ -149,7 +149,15 @@ RendererStatus Renderer::status(const State& state) {
 }
 
 std::vector<TableTiming> Renderer::timeTables(const State& state, const std::filesystem::path& scratch) {
-    return atmosphere_->timeTables(context_, shaders_, state.atmosphere, scratch);
+    std::vector<TableTiming> timings = atmosphere_->timeTables(context_, shaders_, state.atmosphere, scratch);
+    if (state.clouds.enabled || state.clouds.showParticles == ParticleView::OpticalDepth)
+        timings.push_back(clouds_->timeTables(device_, context_, shaders_, state.clouds, scratch));
+    return timings;
+}
+
+std::vector<std::pair<std::string, double>> Renderer::counts(const State& state) {
+    if (!state.clouds.enabled && state.clouds.showParticles == ParticleView::Off) return {};
+    return clouds_->counts(device_, context_);
 }
 
 ExrAttributes Renderer::captureAttributes(const State& state) {

@@ -71,6 +71,9 @@ public:
     // "firmament.atmosphere.*"); waits for the GPU.
     ExrAttributes captureAttributes(const State& state);
 
+    // What the techniques counted in the last frame of `state` (the cloud particles and valid
+    // cells), for the benchmark; waits for the GPU.
+    std::vector<std::pair<std::string, double>> counts(const State& state);
     // How long the tables of `state` take to compute, and to load from a cache written into
     // `scratch` (the benchmark's record).
     std::vector<TableTiming> timeTables(const State& state, const std::filesystem::path& scratch);

@@ -21,7 +21,8 @@ using nlohmann::json;
 const char* kScenarios = R"json({
   "format": 1, "name": "test", "warmupFrames": 1, "measuredFrames": 3, "tables": true,
   "resolutions": [[96, 54]],
-  "base": {"atmosphere": {"lutResolution": "Small (8x32x16x8)"}, "shadows": {"resolution": "512", "cascades": 2}, "lightShafts": {"enabled": false}},
+  "base": {"atmosphere": {"lutResolution": "Small (8x32x16x8)"}, "shadows": {"resolution": "512", "cascades": 2}, "lightShafts": {"enabled": false},
+           "clouds": {"enabled": true, "rings": 2, "ringDimension": 32}},
   "views": [{"name": "valley", "settings": {"camera": {"position": [0, 3200, 0], "yaw": 40, "pitch": -8}}}],
   "variants": [{"name": "SS-Int", "settings": {"atmosphere": {"singleScattering": "Integration", "multipleScattering": "None"}}},
                {"name": "SS-LUT + MS-Occluded", "settings": {"atmosphere": {"singleScattering": "LUT", "multipleScattering": "Occluded"}}}],
@@ -71,10 +72,15 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
             if (p["name"] == "Sky" || p["name"] == "Aerial perspective") skyAndAerial[s["variant"]] += p["gpu"]["medianMs"].get<double>();
         }
         for (const char* pass : {"Clear frame targets", "Shadow cascades", "Terrain", "Sky", "Aerial perspective", "Scene luminance",
-                                 "Light adaptation", "Tone mapping"})
+                                 "Light adaptation", "Tone mapping", "Clouds: valid cells", "Clouds: particle generation", "Clouds: sort",
+                                 "Clouds: shading"})
             EXPECT_TRUE(passes.count(pass)) << name << " has no pass " << pass;
         EXPECT_FALSE(passes.count("Atmosphere tables (Yusov)")) << "the warm-up frames compute the tables, not the measured ones";
         frames[s["variant"]] = s["frame"]["gpu"]["medianMs"].get<double>();
+        // The clouds' counts: particles generated from the valid cells, none over the capacity.
+        EXPECT_GT(s["counts"]["cloud valid cells"].get<double>(), 0.0) << name;
+        EXPECT_GE(s["counts"]["cloud particles"].get<double>(), s["counts"]["cloud valid cells"].get<double>()) << name;
+        EXPECT_EQ(s["counts"]["cloud particles over capacity"].get<double>(), 0.0) << name;
     }
     ASSERT_EQ(report["ratios"].size(), 1u);
     const json& ratio = report["ratios"][0];
@@ -83,10 +89,14 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
     EXPECT_NEAR(ratio["frame"].get<double>(), frames["SS-LUT + MS-Occluded"] / frames["SS-Int"], 1e-9);
     ASSERT_GT(skyAndAerial["SS-Int"], 0.0);
     EXPECT_NEAR(ratio["passes"]["ratio"].get<double>(), skyAndAerial["SS-LUT + MS-Occluded"] / skyAndAerial["SS-Int"], 1e-9);
-    ASSERT_EQ(report["tables"].size(), 1u);
+    ASSERT_EQ(report["tables"].size(), 2u);
     EXPECT_EQ(report["tables"][0]["tables"], "Yusov 2013");
-    EXPECT_GT(report["tables"][0]["computeSeconds"].get<double>(), 0.0);
-    EXPECT_GT(report["tables"][0]["cacheLoadSeconds"].get<double>(), 0.0);
+    EXPECT_EQ(report["tables"][1]["tables"], "Cloud particle (optical depth)");
+    for (const json& t : report["tables"]) {
+        EXPECT_GT(t["computeSeconds"].get<double>(), 0.0);
+        EXPECT_GT(t["cacheLoadSeconds"].get<double>(), 0.0);
+    }
+    EXPECT_NE(run.output.find("cloud particles"), std::string::npos) << run.output;
     std::filesystem::remove_all(folder);
 }
 
