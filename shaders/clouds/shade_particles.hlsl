@@ -4,14 +4,16 @@
 //  - Opacity: 1 - e^(-tau), tau from the optical depth table along the view ray, cut at the
 //    camera and at the scene's depth.
 //  - The light at the particle: the sun's irradiance times the atmosphere's transmittance from the
-//    particle to the sun (Yusov 2013's net density table), so that clouds at sunset glow red; the
-//    sky's ambient irradiance there (the ambient sky light table).
+//    particle to the sun, so that clouds at sunset glow red, and the sky's irradiance there, from
+//    the tables of the model drawn (CLOUD_ATMOSPHERE 1: Yusov 2013's net density and ambient sky
+//    light tables; 2: Bruneton and Neyret 2008's transmittance and irradiance tables).
 //  - The particle's radiance: from the scattering table of the reference sphere, looked up with
 //    the view ray's entry point and direction against the sun: single scattering times the
 //    Henyey-Greenstein phase function for the actual angle, plus multiple scattering; plus the
 //    ambient light scattered by a white cloud (E_sky / pi, brighter at the particle's top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
-//    the atmosphere's transmittance and in-scattering (its render modes), so that the cloud
+//    the atmosphere's transmittance and in-scattering (Yusov's render modes, or Bruneton's
+//    S(x, v) - T S(x0, v)), so that the cloud
 //    stands in the haze, and the light scattered behind the cloud is hidden by its opacity:
 //      C = L_behind (1 - a) + a (L_in(camera -> cloud) + T(camera -> cloud) L_cloud).
 #include "atmosphere/atmosphere_structures.hlsli"
@@ -24,20 +26,44 @@ cbuffer CloudShadingBuffer : register(b3) { CloudShadingConstants shading; };
 Texture3D<float> opticalDepthTable : register(t2);
 Texture2D<float> sceneDepth : register(t3);
 Texture3D<float2> scatteringTable : register(t4);  // x single scattering (phase excluded), y multiple
+SamplerState linearWrap : register(s0);
+SamplerState linearClamp : register(s1);
+
+#include "clouds/particle_lighting.hlsli"
+
+// The atmosphere's tables: CLOUD_ATMOSPHERE 1 Yusov 2013's, 2 Bruneton and Neyret 2008's.
+#if CLOUD_ATMOSPHERE == 2
+#include "atmosphere/bruneton/lookup.hlsli"
+cbuffer BrunetonBuffer : register(b4) { BrunetonConstants bruneton; };
+Texture2D<float4> transmittanceLut : register(t5);
+Texture2D<float4> irradianceLut : register(t6);
+Texture3D<float4> inscatterLut : register(t7);
+#include "atmosphere/bruneton/camera_segment.hlsli"
+#else
 Texture2D<float4> netDensityLut : register(t5);
 Texture3D<float4> singleScatteringLut : register(t6);
 Texture3D<float4> highOrderScatteringLut : register(t7);
 Texture3D<float4> multipleScatteringLut : register(t8);
 Texture2D<float4> ambientLightLut : register(t9);
-SamplerState linearWrap : register(s0);
-SamplerState linearClamp : register(s1);
-
 #include "atmosphere/yusov/view_ray.hlsli"
-#include "clouds/particle_lighting.hlsli"
+#endif
 
-ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) { return shapeVertex(vertexId, instance); }
+// The sun's transmittance from a point `altitude` above the surface to the sun, cosSunZenith from
+// the point's vertical, and the sky's irradiance on a horizontal surface there.
+void lightAt(float altitude, float cosSunZenith, out float3 sunLight, out float3 skyLight) {
+#if CLOUD_ATMOSPHERE == 2
+    float r = atmosphere.earth.x + altitude;
+    sunLight = sunTransmittanceAt(atmosphere, bruneton, transmittanceLut, linearClamp, r, cosSunZenith);
+    skyLight = irradianceAt(atmosphere, bruneton, irradianceLut, linearClamp, r, cosSunZenith);
+#else
+    sunLight = sunTransmittance(atmosphere, netDensityLut, linearClamp, altitude, cosSunZenith);
+    float width = atmosphere.netDensityLutSize.z;
+    skyLight = ambientLightLut.SampleLevel(linearClamp, float2(unitToTexture(saturate(cosSunZenith * 0.5 + 0.5), width), 0.5), 0).rgb;
+#endif
+}
 
-// The camera's ray through the atmosphere up to `distance` along `direction` (from the camera).
+#if CLOUD_ATMOSPHERE != 2
+// The camera's ray through Yusov's atmosphere up to `distance` along `direction`.
 ViewRay cameraRay(float3 direction, float distance, out bool inAtmosphere) {
     float3 earthCentre = float3(0.0, -atmosphere.earth.x, 0.0);
     ViewRay ray;
@@ -53,6 +79,28 @@ ViewRay cameraRay(float3 direction, float distance, out bool inAtmosphere) {
     inAtmosphere = inAtmosphere && ray.length > 0.0;
     return ray;
 }
+#endif
+
+// From the camera to `distance` along `direction`: the transmittance, and the light scattered in
+// (per unit sun irradiance; Yusov's by the atmosphere's render modes).
+void cameraToCloud(float3 direction, float distance, out float3 transmittance, out float3 inscattered) {
+#if CLOUD_ATMOSPHERE == 2
+    CameraSegment segment = brunetonCameraSegment(direction, frame.directionToSun.xyz, distance, transmittanceLut, inscatterLut, linearClamp);
+    transmittance = segment.transmittance;
+    inscattered = segment.light;
+#else
+    bool inAtmosphere;
+    ViewRay ray = cameraRay(direction, distance, inAtmosphere);
+    transmittance = 1.0;
+    inscattered = 0.0;
+    if (inAtmosphere) {
+        transmittance = transmittanceTo(ray, ray.length);
+        inscattered = scatteringAlongRay(ray, frame.directionToSun.xyz, shading.modes.x, shading.modes.y, int(shading.modes.z));
+    }
+#endif
+}
+
+ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) { return shapeVertex(vertexId, instance); }
 
 float4 ps_main(ShapeVertex input) : SV_Target {
     ParticlePixel px;
@@ -67,9 +115,8 @@ float4 ps_main(ShapeVertex input) : SV_Target {
     float3 fromCentre = p.centre.xyz + float3(0.0, atmosphere.earth.x, 0.0);
     float altitude = length(fromCentre) - atmosphere.earth.x;
     float cosSunZenith = dot(normalize(fromCentre), sun);
-    float3 sunLight = sunTransmittance(atmosphere, netDensityLut, linearClamp, altitude, cosSunZenith);
-    float width = atmosphere.netDensityLutSize.z;
-    float3 skyLight = ambientLightLut.SampleLevel(linearClamp, float2(unitToTexture(saturate(cosSunZenith * 0.5 + 0.5), width), 0.5), 0).rgb;
+    float3 sunLight, skyLight;
+    lightAt(altitude, cosSunZenith, sunLight, skyLight);
 
     // The sun in the particle's unit-sphere space.
     float3 l = normalize(float3(dot(sun, hit.tangent) / hit.scale.x, dot(sun, hit.normal) / hit.scale.y, dot(sun, hit.bitangent) / hit.scale.z));
@@ -80,13 +127,8 @@ float4 ps_main(ShapeVertex input) : SV_Target {
     float3 radiance = sunLight * (scattered.x * phase + scattered.y) + skyLight * ((0.6 + 0.4 * height) / kTablePi);
 
     // Through the atmosphere from the camera to where the ray enters the particle.
-    bool inAtmosphere;
-    ViewRay ray = cameraRay(direction, start, inAtmosphere);
-    float3 transmittance = 1.0, inscattered = 0.0;
-    if (inAtmosphere) {
-        transmittance = transmittanceTo(ray, ray.length);
-        inscattered = scatteringAlongRay(ray, sun, shading.modes.x, shading.modes.y, int(shading.modes.z));
-    }
+    float3 transmittance, inscattered;
+    cameraToCloud(direction, start, transmittance, inscattered);
     float3 light = frame.sunIrradiance.rgb * (inscattered + transmittance * radiance);
     return float4(light * opacity, opacity);
 }

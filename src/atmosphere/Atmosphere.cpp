@@ -140,6 +140,22 @@ ScatteringLookup Atmosphere::scatteringLookup(FrameContext& frame, const Atmosph
     return l;
 }
 
+BrunetonLookup Atmosphere::brunetonLookup(FrameContext& frame, const AtmosphereSettings& settings) {
+    BrunetonLookup l;
+    const BrunetonPrecomputation* tables = bruneton_.current();
+    if (!settings.enabled || !tables) return l;
+    brunetonPhysics_.update(frame.context, tables->parameters().physics.constants());
+    brunetonConstants_.update(frame.context, tables->parameters().constants());
+    l.ready = true;
+    l.atmosphere = brunetonPhysics_.get();
+    l.bruneton = brunetonConstants_.get();
+    l.transmittance = tables->tables().transmittance.srv.Get();
+    l.irradiance = tables->tables().irradiance.srv.Get();
+    l.inscatter = tables->tables().inscatter.srv.Get();
+    l.linearClamp = linearClamp_.Get();
+    return l;
+}
+
 std::vector<TableTiming> Atmosphere::timeTables(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
                                                 const std::filesystem::path& scratch) {
     std::vector<TableTiming> timings;

@@ -12,6 +12,7 @@
 //    Yusov's tables for a technique that looks them up itself (ScatteringLookup).
 // The model comparison stays inside: the ground sees only the regions it is given.
 #include "atmosphere/AtmosphereSettings.h"
+#include "atmosphere/BrunetonLookup.h"
 #include "atmosphere/GroundLighting.h"
 #include "atmosphere/ScatteringLookup.h"
 #include "atmosphere/bruneton/BrunetonPass.h"
@@ -47,6 +48,8 @@ public:
     std::vector<GroundLighting> groundLighting(FrameContext& frame, const AtmosphereSettings& settings);
     // Yusov's tables for another technique; not ready() when that model's tables do not exist.
     ScatteringLookup scatteringLookup(FrameContext& frame, const AtmosphereSettings& settings);
+    // Bruneton's tables for another technique; not ready() when that model's tables do not exist.
+    BrunetonLookup brunetonLookup(FrameContext& frame, const AtmosphereSettings& settings);
 
     // For each model the settings draw: how long its tables take to compute, and to load from a
     // cache written into `scratch` (the benchmark). Does not touch the tables in use.

@@ -13,8 +13,10 @@ namespace firmament {
 namespace {
 const ShaderKey kOpticalDepthVertexShader{"clouds/optical_depth_view.hlsl", "vs_main", "vs_5_0", {}};
 const ShaderKey kOpticalDepthPixelShader{"clouds/optical_depth_view.hlsl", "ps_main", "ps_5_0", {}};
-const ShaderKey kShadeVertexShader{"clouds/shade_particles.hlsl", "vs_main", "vs_5_0", {}};
-const ShaderKey kShadePixelShader{"clouds/shade_particles.hlsl", "ps_main", "ps_5_0", {}};
+// The shading's shaders through Yusov's tables (CLOUD_ATMOSPHERE=1) or Bruneton's (2).
+ShaderKey shadeKey(const char* entry, const char* profile, bool bruneton) {
+    return {"clouds/shade_particles.hlsl", entry, profile, {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1"}};
+}
 }  // namespace
 
 Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
@@ -80,12 +82,12 @@ void Clouds::renderGeometry(FrameContext& frame, const CloudSettings& settings) 
 }
 
 // Show particles replaces the shaded clouds with its view of them.
-void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& settings, const ScatteringLookup* atmosphere) {
+void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere) {
     const ParticleTablePrecomputation* tables = tables_.current();
     if (!tables) return;
+    const bool lit = (atmosphere.yusov && atmosphere.yusov->ready) || (atmosphere.bruneton && atmosphere.bruneton->ready);
     if (settings.showParticles == ParticleView::OpticalDepth) drawOpticalDepth(frame, tables->tables());
-    else if (settings.showParticles == ParticleView::Off && settings.enabled && atmosphere && atmosphere->ready)
-        drawShaded(frame, tables->tables(), *atmosphere);
+    else if (settings.showParticles == ParticleView::Off && settings.enabled && lit) drawShaded(frame, tables->tables(), atmosphere);
 }
 
 const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
@@ -109,13 +111,15 @@ const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
 
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the
 // scene's depth.
-void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, const ScatteringLookup& atmosphere) {
+void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere) {
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
     auto pass = frame.profiler.scope("Clouds: shading");
+    const bool bruneton = !(atmosphere.yusov && atmosphere.yusov->ready);
     gpu::CloudShadingConstants c{};
-    c.modes = glm::uvec4(static_cast<unsigned>(atmosphere.singleMode), static_cast<unsigned>(atmosphere.multipleMode),
-                         static_cast<unsigned>(atmosphere.integrationSteps), 0u);
+    if (!bruneton)
+        c.modes = glm::uvec4(static_cast<unsigned>(atmosphere.yusov->singleMode), static_cast<unsigned>(atmosphere.yusov->multipleMode),
+                             static_cast<unsigned>(atmosphere.yusov->integrationSteps), 0u);
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
                              static_cast<float>(scatteringParameters_.viewZeniths), 0.0f);
     shadingConstants_.update(context, c);
@@ -124,15 +128,26 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, const
     context->OMSetBlendState(premultiplied_.Get(), nullptr, 0xffffffffu);
     context->OMSetDepthStencilState(nullptr, 0);
     context->RSSetState(noCulling_.Get());
-    ID3D11Buffer* buffers[] = {atmosphere.atmosphere, shadingConstants_.get()};
-    context->PSSetConstantBuffers(2, 2, buffers);
-    ID3D11ShaderResourceView* extra[] = {tables.opticalDepth.srv.Get(), frame.targets.depth().srv.Get(), scattering.srv.Get(),
-                                         atmosphere.netDensity, atmosphere.singleScattering, atmosphere.highOrderScattering,
-                                         atmosphere.multipleScattering, atmosphere.ambientLight};
+    const ScatteringLookup* y = atmosphere.yusov;
+    const BrunetonLookup* b = atmosphere.bruneton;
+    ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere, shadingConstants_.get(), bruneton ? b->bruneton : nullptr};
+    context->PSSetConstantBuffers(2, 3, buffers);
+    ID3D11ShaderResourceView* extra[8] = {tables.opticalDepth.srv.Get(), frame.targets.depth().srv.Get(), scattering.srv.Get()};
+    if (bruneton) {
+        extra[3] = b->transmittance;
+        extra[4] = b->irradiance;
+        extra[5] = b->inscatter;
+    } else {
+        extra[3] = y->netDensity;
+        extra[4] = y->singleScattering;
+        extra[5] = y->highOrderScattering;
+        extra[6] = y->multipleScattering;
+        extra[7] = y->ambientLight;
+    }
     context->PSSetShaderResources(2, 8, extra);
-    ID3D11SamplerState* samplers[] = {linearWrap_.Get(), atmosphere.linearClamp};
+    ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
     context->PSSetSamplers(0, 2, samplers);
-    particles_.drawInstanced(frame, kShadeVertexShader, kShadePixelShader);
+    particles_.drawInstanced(frame, shadeKey("vs_main", "vs_5_0", bruneton), shadeKey("ps_main", "ps_5_0", bruneton));
     ID3D11ShaderResourceView* none[8] = {};
     context->PSSetShaderResources(2, 8, none);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);

@@ -3,6 +3,7 @@
 // the particles generated and sorted on the GPU each frame, with the views of them that
 // "Show particles" selects. The renderer's one entry point for the clouds.
 #include "clouds/CloudParticles.h"
+#include "atmosphere/BrunetonLookup.h"
 #include "atmosphere/ScatteringLookup.h"
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
@@ -23,11 +24,17 @@ public:
     // bounding shapes, which then take the aerial perspective like the terrain). Nothing when
     // Show particles is off.
     void renderGeometry(FrameContext& frame, const CloudSettings& settings);
-    // After the sky and the aerial perspective: the shaded clouds (through `atmosphere`, Yusov
-    // 2013's tables, when they are drawn alone; else none), or the translucent view of the
-    // particles, over the lit scene. The particle scattering table is read from the storage's
-    // media folder the first time; throws Error naming the file when it cannot be.
-    void renderTranslucent(FrameContext& frame, const CloudSettings& settings, const ScatteringLookup* atmosphere);
+    // The atmosphere model the clouds are lit through: Yusov 2013's tables or Bruneton's (one of
+    // them, the model drawn alone; none in a comparison of the two).
+    struct AtmosphereTables {
+        const ScatteringLookup* yusov = nullptr;
+        const BrunetonLookup* bruneton = nullptr;
+    };
+    // After the sky and the aerial perspective: the shaded clouds through `atmosphere`, or the
+    // translucent view of the particles, over the lit scene. The particle scattering table is
+    // read from the storage's media folder the first time; throws Error naming the file when it
+    // cannot be.
+    void renderTranslucent(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere);
 
     // The particle tables for `settings`, computed or loaded now (tests, benchmarks).
     const ParticleTablePrecomputation& tables(FrameContext& frame, const CloudSettings& settings);
@@ -45,7 +52,7 @@ public:
 private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);
     void drawOpticalDepth(FrameContext& frame, const ParticleTables& tables);
-    void drawShaded(FrameContext& frame, const ParticleTables& tables, const ScatteringLookup& atmosphere);
+    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere);
     const Texture3D& scatteringTable(ID3D11Device* device);
 
     TableStorage storage_;

@@ -79,13 +79,15 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         atmosphere_->renderSky(frame, state.atmosphere);
         atmosphere_->renderAerialPerspective(frame, state.atmosphere);
     }
-    // 6b. The clouds, shaded through Yusov 2013's tables when they are drawn alone (or the
+    // 6b. The clouds, shaded through the tables of the atmosphere model drawn alone (or the
     //     particles' translucent view), over the lit scene.
     {
         const AtmosphereSettings& a = state.atmosphere;
-        const bool yusovAlone = a.model == AtmosphereModel::Yusov2013 && a.comparison == ModelComparison::None && scattering;
-        const ScatteringLookup lookup = yusovAlone && state.clouds.enabled ? atmosphere_->scatteringLookup(frame, a) : ScatteringLookup{};
-        clouds_->renderTranslucent(frame, state.clouds, yusovAlone ? &lookup : nullptr);
+        const bool alone = a.comparison == ModelComparison::None && scattering && state.clouds.enabled;
+        const bool yusov = alone && a.model == AtmosphereModel::Yusov2013, bruneton = alone && a.model == AtmosphereModel::Bruneton2008;
+        const ScatteringLookup yusovTables = yusov ? atmosphere_->scatteringLookup(frame, a) : ScatteringLookup{};
+        const BrunetonLookup brunetonTables = bruneton ? atmosphere_->brunetonLookup(frame, a) : BrunetonLookup{};
+        clouds_->renderTranslucent(frame, state.clouds, {yusov ? &yusovTables : nullptr, bruneton ? &brunetonTables : nullptr});
     }
     // 7. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);

@@ -15,8 +15,7 @@ void clouds(PanelContext& panel) {
     const CloudSettings& c = panel.model.state.clouds;
     editSettings(panel, "clouds", {"enabled"});
     const AtmosphereSettings& a = panel.model.state.atmosphere;
-    if (c.enabled && (a.model != AtmosphereModel::Yusov2013 || a.comparison != ModelComparison::None))
-        ImGui::TextDisabled("The clouds are lit by the Yusov 2013 model drawn alone");
+    if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
     if (const std::optional<double> progress = panel.model.cloudTableProgress)
         ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
