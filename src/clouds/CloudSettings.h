@@ -22,8 +22,8 @@ inline constexpr std::array<std::string_view, 4> kCloudDensityResolutionNames{"1
 
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with
-    // either atmosphere model drawn alone). Off by default while the clouds are being built.
-    bool enabled = false;
+    // either atmosphere model drawn alone).
+    bool enabled = true;
     // "Show particles": each particle drawn over the scene as its bounding ellipsoid lit by the
     // sun, or white with the transparency of its optical depth (docs/clouds.md).
     ParticleView showParticles = ParticleView::Off;

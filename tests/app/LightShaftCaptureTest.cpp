@@ -35,7 +35,9 @@ constexpr int kWidth = 96, kHeight = 54;
 std::filesystem::path captureFolder() { return std::filesystem::temp_directory_path() / "firmament-light-shafts"; }
 
 // Captures one frame at width x height; returns the EXR's RGB (radiance).
+// The shafts alone: no clouds over them.
 std::vector<float> capture(const std::string& name, std::vector<std::wstring> settings, int width = kWidth, int height = kHeight) {
+    settings.insert(settings.begin(), L"clouds.enabled=off");
     return captureRadiance(captureFolder(), name, settings, width, height);
 }
 

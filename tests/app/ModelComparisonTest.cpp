@@ -22,7 +22,7 @@ constexpr int kWidth = 64, kHeight = 40;
 ExrFile capture(const std::filesystem::path& folder, const std::string& name, std::vector<std::wstring> extra) {
     std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
                                    L"--set", L"camera.pitch=2", L"--set", L"sun.elevation=8", L"--set", L"atmosphere.lutResolution=small (8x32x16x8)",
-                                   L"--set", L"terrain.enabled=off", L"--set", L"lightShafts.enabled=off", L"--capture",
+                                   L"--set", L"terrain.enabled=off", L"--set", L"lightShafts.enabled=off", L"--set", L"clouds.enabled=off", L"--capture",
                                    (folder / (name + ".png")).wstring()};
     args.insert(args.end(), extra.begin(), extra.end());
     const ProcessResult run = runProcess(firmamentExe(), args);

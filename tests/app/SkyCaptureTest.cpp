@@ -50,7 +50,7 @@ std::vector<SkySample> captureSky(const std::string& tag, const std::vector<std:
                                         L"--set", L"camera.fieldOfView=70", L"--set", L"sun.azimuth=20", L"--set", L"atmosphere.sunIntensity=2",
                                         L"--set", L"atmosphere.multipleScattering=none", L"--set", L"atmosphere.scatteringOrders=1",
                                         // The atmosphere's own passes, per pixel (the light shafts are held to them elsewhere).
-                                        L"--set", L"lightShafts.enabled=off"};
+                                        L"--set", L"lightShafts.enabled=off", L"--set", L"clouds.enabled=off"};
     for (const std::wstring& s : settings) arguments.insert(arguments.end(), {L"--set", s});
     arguments.insert(arguments.end(), {L"--capture", (folder / "sky.png").wstring()});
     const ProcessResult run = runProcess(firmamentExe(), arguments);

@@ -36,10 +36,13 @@ TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("saved to the cache"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("exported to"), std::string::npos) << run.output;
-    // Net density, single, high-order and multiple scattering, ambient light; and the terrain's
-    // height field, generated at the first run into the same cache.
+    // Net density, single, high-order and multiple scattering, ambient light; the terrain's
+    // height field, generated at the first run into the same cache; the clouds' optical depth table.
     const auto cached = filesIn(cache);
-    ASSERT_EQ(cached.size(), 6u);
+    ASSERT_EQ(cached.size(), 7u);
+    EXPECT_EQ(std::count_if(cached.begin(), cached.end(),
+                            [](const std::filesystem::path& f) { return f.filename().string().find("cloud-optical-depth") != std::string::npos; }),
+              1);
     EXPECT_EQ(std::count_if(cached.begin(), cached.end(),
                             [](const std::filesystem::path& f) { return f.filename().string().rfind("terrain-", 0) == 0; }),
               1);
@@ -83,7 +86,7 @@ TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
     run = runWithCache(cache, {L"--set", L"atmosphere.lutResolution=medium (16x64x32x8)"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("pre-computing"), std::string::npos) << run.output;
-    EXPECT_EQ(filesIn(cache).size(), 11u);
+    EXPECT_EQ(filesIn(cache).size(), 12u);  // five more of the atmosphere; the clouds' table is the same
     std::filesystem::remove_all(folder);
 }
 
@@ -124,7 +127,7 @@ TEST(TableCache, BothModelsCacheAndExportTheirTables) {
     const auto cache = folder / "cache", exported = folder / "exported";
     ProcessResult run = runWithCache(cache, {L"--set", L"atmosphere.comparison=split", L"--export-luts", exported.wstring()});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
-    EXPECT_EQ(filesIn(cache).size(), 9u);  // Yusov's five, Bruneton's three, the terrain's height field
+    EXPECT_EQ(filesIn(cache).size(), 10u);  // Yusov's five, Bruneton's three, the terrain's height field, the clouds' optical depth
     for (const char* name : {"bruneton-transmittance.exr", "bruneton-irradiance.exr", "bruneton-inscatter.exr", "multiple-scattering.exr"})
         EXPECT_TRUE(std::filesystem::exists(exported / name)) << name;
     const ExrFile inscatter = readExr(exported / "bruneton-inscatter.exr");

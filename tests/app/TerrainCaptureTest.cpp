@@ -30,8 +30,9 @@ std::filesystem::path scratch(const std::string& name) {
 // One headless frame with the given --set assignments; its HDR capture.
 ExrFile captureFrame(const std::string& name, const std::vector<std::wstring>& settings) {
     const auto folder = scratch(name);
+    // The terrain alone under the atmosphere: no clouds in front of it.
     std::vector<std::wstring> arguments{L"--headless", L"--frames", L"1", L"--resolution",
-                                        std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight)};
+                                        std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight), L"--set", L"clouds.enabled=off"};
     for (const auto& s : settings) arguments.insert(arguments.end(), {L"--set", s});
     arguments.insert(arguments.end(), {L"--capture", (folder / "frame.png").wstring()});
     const ProcessResult run = runProcess(firmamentExe(), arguments);
