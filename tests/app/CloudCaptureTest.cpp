@@ -45,7 +45,7 @@ double changedShare(const std::vector<float>& a, const std::vector<float>& b) {
 }
 
 TEST(CloudCapture, ShowParticlesDrawsTheFieldAsGeometryAndAsTransparency) {
-    const std::vector<float> off = capture("off", {});
+    const std::vector<float> off = capture("off", {L"clouds.enabled=off"});
     const std::vector<float> shapes = capture("shapes", {L"clouds.showParticles=Bounding shapes"});
     const std::vector<float> transparency = capture("transparency", {L"clouds.showParticles=Optical depth"});
     ASSERT_FALSE(off.empty());
@@ -98,7 +98,7 @@ TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
             return all;
         };
         const std::string tag = name.substr(0, 4);
-        const std::vector<float> clearNoon = capture("clear-noon-" + tag, with({L"sun.elevation=50"}));
+        const std::vector<float> clearNoon = capture("clear-noon-" + tag, with({L"sun.elevation=50", L"clouds.enabled=off"}));
         const std::vector<float> cloudyNoon = capture("cloudy-noon-" + tag, with({L"sun.elevation=50", L"clouds.enabled=on"}));
         const std::vector<float> cloudySunset = capture("cloudy-sunset-" + tag, with({L"sun.elevation=3", L"clouds.enabled=on"}));
         ASSERT_FALSE(clearNoon.empty());
