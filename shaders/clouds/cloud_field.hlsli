@@ -4,24 +4,12 @@
 // particles a cell holds (Yusov 2014, "Particle generation"; docs/clouds.md). The CPU twin is
 // src/clouds/CloudField.cpp: change both together.
 #include "clouds/cloud_structures.hlsli"
+#include "common/hash.hlsli"
 
 cbuffer FrameBuffer : register(b0) { FrameConstants frame; };
 cbuffer CloudFieldBuffer : register(b1) { CloudFieldConstants field; };
 
 static const float kTwoPi = 6.2831853;
-
-// Wellons' lowbias32 integer hash (src/terrain/IntegerHash.h).
-uint hash32(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-// Uniform in [0, 1) from 24 bits of a hash.
-float unitFromHash(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
 
 struct CloudCell {
     uint ring;

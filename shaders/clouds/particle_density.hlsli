@@ -4,20 +4,10 @@
 // generation"): a smooth radial fall-off perturbed by fractal 3D value noise, the same
 // thresholded to 0 or 1, or a pyroclastic sphere whose radius the noise displaces. The CPU twin
 // is src/clouds/ParticleDensity.cpp: change both together.
-
-// Wellons' lowbias32 integer hash (src/terrain/IntegerHash.h).
-uint particleHash(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
+#include "common/hash.hlsli"
 
 float particleLatticeValue(int3 c, uint octave) {
-    uint h = particleHash(asuint(c.x) ^ particleHash(asuint(c.y) ^ particleHash(asuint(c.z) ^ particleHash(octave + 0x632be5abu))));
-    return float(h >> 8) * (1.0 / 16777216.0);
+    return unitFromHash(hash32(asuint(c.x) ^ hash32(asuint(c.y) ^ hash32(asuint(c.z) ^ hash32(octave + 0x632be5abu)))));
 }
 
 // Perlin's quintic fade.
