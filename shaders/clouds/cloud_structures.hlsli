@@ -31,11 +31,12 @@ struct ParticleTableConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(ParticleTableConstants);
 
-// The clouds' shading (clouds/shade_particles.hlsl): the atmosphere's render modes and the
-// scattering table's size.
+// The clouds' shading (clouds/shade_particles.hlsl): the atmosphere's render modes, the
+// scattering table's size and the per-pixel lists' capacity.
 struct CloudShadingConstants {
     uint4 modes;       // x: single scattering mode, y: multiple scattering mode, z: integration steps (the atmosphere's); w: unused
     float4 scattering; // the particle scattering table's texels: x entry angles, y view azimuths, z view zeniths; w: unused
+    uint4 blending;    // x: the per-pixel lists' node capacity, y: the row of their counters (clouds/fragment_lists.hlsli); zw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(CloudShadingConstants);
 

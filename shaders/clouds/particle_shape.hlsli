@@ -107,14 +107,16 @@ float particleOpticalDepth(CloudParticle p, ParticleHit hit, float length, Textu
     return sampleOpticalDepth(table, linearWrap, u, field.tableSizes) * length * p.shape.y * kCloudExtinction;
 }
 
-// A pixel of a particle's quad: the particle, the view ray, its hit, where the visible stretch
-// starts (m from the camera) and the stretch's opacity 1 - e^(-tau); false where the ray misses
-// the particle, or the camera or the scene hides all of it.
+// A pixel of a particle's quad: the particle, the view ray, its hit, the visible stretch
+// [start, end] (m from the camera), its optical depth tau and opacity 1 - e^(-tau); false where
+// the ray misses the particle, or the camera or the scene hides all of it.
 struct ParticlePixel {
     CloudParticle particle;
     float3 direction;
     ParticleHit hit;
     float start;
+    float end;
+    float opticalDepth;
     float opacity;
 };
 
@@ -122,12 +124,15 @@ bool particlePixel(ShapeVertex input, Texture2D<float> depthBuffer, Texture3D<fl
     px.particle = particles[input.slot];
     px.direction = pixelDirection(input.position);
     px.start = 0.0;
+    px.end = 0.0;
+    px.opticalDepth = 0.0;
     px.opacity = 0.0;
     if (!hitParticle(px.particle, px.direction, px.hit)) return false;
     px.start = max(px.hit.near, 0.0);
-    float end = min(px.hit.far, sceneDistance(depthBuffer, input.position));
-    if (end <= px.start) return false;
-    px.opacity = 1.0 - exp(-particleOpticalDepth(px.particle, px.hit, end - px.start, table, linearWrap));
+    px.end = min(px.hit.far, sceneDistance(depthBuffer, input.position));
+    if (px.end <= px.start) return false;
+    px.opticalDepth = particleOpticalDepth(px.particle, px.hit, px.end - px.start, table, linearWrap);
+    px.opacity = 1.0 - exp(-px.opticalDepth);
     return true;
 }
 #endif

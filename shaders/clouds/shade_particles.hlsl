@@ -16,9 +16,20 @@
 //    S(x, v) - T S(x0, v)), so that the cloud
 //    stands in the haze, and the light scattered behind the cloud is hidden by its opacity:
 //      C = L_behind (1 - a) + a (L_in(camera -> cloud) + T(camera -> cloud) L_cloud).
+//  - Blending (CLOUD_BLENDING; docs/clouds.md, "Blending"): 0 plain alpha blending, the particle's
+//    premultiplied light to the target; 1 the particle's fragment (its light not premultiplied,
+//    extinction tau / length, visible stretch) appended to the pixel's list for the resolve; 2
+//    volume-aware blending in primitive order through rasterizer-ordered views.
 #include "atmosphere/atmosphere_structures.hlsli"
 #include "clouds/optical_depth_table.hlsli"
 #include "clouds/particle_shape.hlsli"
+#include "clouds/volume_blending.hlsli"
+#if CLOUD_BLENDING == 1
+#define FRAGMENT_LISTS_APPEND
+#include "clouds/fragment_lists.hlsli"
+#elif CLOUD_BLENDING == 2
+#include "clouds/ordered_blending.hlsli"
+#endif
 
 cbuffer AtmosphereBuffer : register(b2) { AtmosphereConstants atmosphere; };
 cbuffer CloudShadingBuffer : register(b3) { CloudShadingConstants shading; };
@@ -102,13 +113,16 @@ void cameraToCloud(float3 direction, float distance, out float3 transmittance, o
 
 ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) { return shapeVertex(vertexId, instance); }
 
-float4 ps_main(ShapeVertex input) : SV_Target {
+// The particle's fragment at this pixel: its light toward the camera through the atmosphere
+// (per the sun's irradiance at the top of the atmosphere, not premultiplied), its extinction and
+// visible stretch; false where the pixel misses it.
+bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
+    fragment = (ParticleFragment)0;
     ParticlePixel px;
-    if (!particlePixel(input, sceneDepth, opticalDepthTable, linearWrap, px) || px.opacity < 1e-4) discard;
+    if (!particlePixel(input, sceneDepth, opticalDepthTable, linearWrap, px) || px.opacity < 1e-4) return false;
     CloudParticle p = px.particle;
     ParticleHit hit = px.hit;
     float3 direction = px.direction;
-    float start = px.start, opacity = px.opacity;
 
     // The light at the particle's centre.
     float3 sun = frame.directionToSun.xyz;
@@ -128,7 +142,32 @@ float4 ps_main(ShapeVertex input) : SV_Target {
 
     // Through the atmosphere from the camera to where the ray enters the particle.
     float3 transmittance, inscattered;
-    cameraToCloud(direction, start, transmittance, inscattered);
-    float3 light = frame.sunIrradiance.rgb * (inscattered + transmittance * radiance);
-    return float4(light * opacity, opacity);
+    cameraToCloud(direction, px.start, transmittance, inscattered);
+    fragment.colour = frame.sunIrradiance.rgb * (inscattered + transmittance * radiance);
+    fragment.extinction = px.opticalDepth / (px.end - px.start);
+    fragment.front = px.start;
+    fragment.back = px.end;
+    return true;
 }
+
+#if CLOUD_BLENDING == 1
+void ps_main(ShapeVertex input) {
+    ParticleFragment fragment;
+    if (!shadeFragment(input, fragment)) discard;
+    appendFragment(uint2(input.position.xy), fragment, shading.blending.x, shading.blending.y);
+}
+#elif CLOUD_BLENDING == 2
+float4 ps_main(ShapeVertex input) : SV_Target {
+    ParticleFragment fragment;
+    if (!shadeFragment(input, fragment)) discard;
+    BlendedLight behind = mergeInPixelOrder(uint2(input.position.xy), fragment);
+    return float4(behind.light, 1.0 - behind.transmittance);
+}
+#else
+float4 ps_main(ShapeVertex input) : SV_Target {
+    ParticleFragment fragment;
+    if (!shadeFragment(input, fragment)) discard;
+    float opacity = 1.0 - fragmentTransmittance(fragment);
+    return float4(fragment.colour * opacity, opacity);
+}
+#endif

@@ -292,7 +292,8 @@ void App::renderFrame(bool drawGui) {
                    noticeIsError_,
                    status.exposure,
                    status.atmosphereProgress,
-                   status.cloudTableProgress};
+                   status.cloudTableProgress,
+                   status.cloudBlending};
     const GuiRequests requests = overlay_->build(model);
     const auto gui = [&](ID3D11RenderTargetView* output) { overlay_->render(context, output); };
     renderer_.render(state_, FrameTime{timer_.totalSeconds(), timer_.deltaSeconds()}, options_.headless, outputTarget(),

@@ -19,11 +19,19 @@ enum class ParticleDensityMethod { RadialNoise, ThresholdedNoise, Pyroclastic };
 inline constexpr std::array<std::string_view, 3> kParticleDensityMethodNames{"Radial fall-off and noise", "Thresholded noise", "Pyroclastic"};
 // "Cloud density resolution": the side of the density map, a power of two from 128 to 1024.
 inline constexpr std::array<std::string_view, 4> kCloudDensityResolutionNames{"128", "256", "512", "1024"};
+// "Blending path" of volume-aware blending: rasterizer-ordered views where the device has them
+// (Auto), or each pixel's fragments in a list sorted by a resolve pass (src/clouds/ParticleBlending.h).
+enum class BlendingPath { Auto, RasterizerOrdered, PerPixelLists };
+inline constexpr std::array<std::string_view, 3> kBlendingPathNames{"Auto", "Rasterizer-ordered views", "Per-pixel lists"};
 
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with
     // either atmosphere model drawn alone).
     bool enabled = true;
+    // "Volumetric blending": particles that intersect are merged as volumes (Yusov 2014); off,
+    // plain back-to-front alpha blending, for comparison.
+    bool volumetricBlending = true;
+    BlendingPath blendingPath = BlendingPath::Auto;  // "Blending path"
     // "Show particles": each particle drawn over the scene as its bounding ellipsoid lit by the
     // sun, or white with the transparency of its optical depth (docs/clouds.md).
     ParticleView showParticles = ParticleView::Off;
@@ -45,6 +53,8 @@ struct CloudSettings {
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable clouds");
         v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
+        v.field("volumetricBlending", volumetricBlending, "Volumetric blending");
+        v.choice("blendingPath", blendingPath, kBlendingPathNames, "Blending path");
         v.choice("particleDensity", particleDensity, kParticleDensityMethodNames, "Particle density");
         int resolutionIndex = 0;
         while (resolutionIndex < 3 && (128 << resolutionIndex) < densityResolution) ++resolutionIndex;

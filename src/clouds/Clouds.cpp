@@ -7,15 +7,21 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace firmament {
 
 namespace {
 const ShaderKey kOpticalDepthVertexShader{"clouds/optical_depth_view.hlsl", "vs_main", "vs_5_0", {}};
 const ShaderKey kOpticalDepthPixelShader{"clouds/optical_depth_view.hlsl", "ps_main", "ps_5_0", {}};
-// The shading's shaders through Yusov's tables (CLOUD_ATMOSPHERE=1) or Bruneton's (2).
-ShaderKey shadeKey(const char* entry, const char* profile, bool bruneton) {
-    return {"clouds/shade_particles.hlsl", entry, profile, {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1"}};
+// The shading's shaders through Yusov's tables (CLOUD_ATMOSPHERE=1) or Bruneton's (2); the pixel
+// shader's for each blending path (CLOUD_BLENDING=0 alpha, 1 per-pixel lists, 2 ordered views).
+ShaderKey shadeVertexKey(bool bruneton) {
+    return {"clouds/shade_particles.hlsl", "vs_main", "vs_5_0", {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1"}};
+}
+ShaderKey shadePixelKey(bool bruneton, ParticleBlending blending) {
+    const char* path = blending == ParticleBlending::PerPixelLists ? "CLOUD_BLENDING=1" : blending == ParticleBlending::RasterizerOrdered ? "CLOUD_BLENDING=2" : "CLOUD_BLENDING=0";
+    return {"clouds/shade_particles.hlsl", "ps_main", "ps_5_0", {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1", path}};
 }
 }  // namespace
 
@@ -26,7 +32,13 @@ Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
       linearWrap_(states::linearWrap(device)),
       premultiplied_(states::premultipliedAlpha(device)),
       noCulling_(states::cullNone(device)),
-      shadingConstants_(device) {}
+      shadingConstants_(device),
+      blendingSupport_(queryBlendingSupport(device)),
+      blending_(device) {
+    log::info(std::string("clouds: the device ") + (blendingSupport_.rasterizerOrderedViews ? "supports" : "has no") +
+              " rasterizer-ordered views; Blending path Auto: " +
+              std::string(describeParticleBlending(chooseParticleBlending(true, BlendingPath::Auto, blendingSupport_))));
+}
 
 ParticleTableParameters Clouds::tableParameters(const CloudSettings& settings) {
     ParticleTableParameters p;
@@ -62,7 +74,25 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
     };
     const double cells = read(particles_.validCells().arguments()), generated = read(particles_.particleArguments());
     const double capacity = static_cast<double>(particles_.capacity());
-    return {{"cloud valid cells", cells}, {"cloud particles", std::min(generated, capacity)}, {"cloud particles over capacity", std::max(generated - capacity, 0.0)}};
+    std::vector<std::pair<std::string, double>> result{
+        {"cloud valid cells", cells}, {"cloud particles", std::min(generated, capacity)}, {"cloud particles over capacity", std::max(generated - capacity, 0.0)}};
+    if (blending_.path() == ParticleBlending::PerPixelLists) {
+        const VolumeBlendingPass::Overflow o = blending_.readOverflow(device, context);
+        result.emplace_back("cloud fragments", static_cast<double>(o.nodesAskedFor));
+        result.emplace_back("cloud fragments over the node pool", static_cast<double>(o.nodesDropped));
+        result.emplace_back("cloud fragments over a pixel's limit", static_cast<double>(o.fragmentsDropped));
+    }
+    return result;
+}
+
+std::string Clouds::blendingStatus() const {
+    std::string status(describeParticleBlending(blending_.path()));
+    if (blending_.path() == ParticleBlending::PerPixelLists) {
+        if (const std::optional<VolumeBlendingPass::Overflow> o = blending_.latestOverflow())
+            status += ": " + std::to_string(o->nodesAskedFor) + " fragments in a pool of " + std::to_string(blending_.nodeCapacity()) + ", " +
+                      std::to_string(o->nodesDropped) + " dropped, " + std::to_string(o->fragmentsDropped) + " past a pixel's limit of 32";
+    }
+    return status;
 }
 
 std::optional<double> Clouds::tableProgress() const {
@@ -87,7 +117,8 @@ void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& setting
     if (!tables) return;
     const bool lit = (atmosphere.yusov && atmosphere.yusov->ready) || (atmosphere.bruneton && atmosphere.bruneton->ready);
     if (settings.showParticles == ParticleView::OpticalDepth) drawOpticalDepth(frame, tables->tables());
-    else if (settings.showParticles == ParticleView::Off && settings.enabled && lit) drawShaded(frame, tables->tables(), atmosphere);
+    else if (settings.showParticles == ParticleView::Off && settings.enabled && lit)
+        drawShaded(frame, tables->tables(), atmosphere, chooseParticleBlending(settings.volumetricBlending, settings.blendingPath, blendingSupport_));
 }
 
 const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
@@ -111,7 +142,7 @@ const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
 
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the
 // scene's depth.
-void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere) {
+void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending) {
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
     auto pass = frame.profiler.scope("Clouds: shading");
@@ -122,10 +153,11 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
                              static_cast<unsigned>(atmosphere.yusov->integrationSteps), 0u);
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
                              static_cast<float>(scatteringParameters_.viewZeniths), 0.0f);
+    blending_.begin(frame.device, context, blending, frame.width(), frame.height());
+    c.blending = glm::uvec4(blending_.nodeCapacity(), static_cast<unsigned>(frame.height()), 0u, 0u);
     shadingConstants_.update(context, c);
     ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
-    context->OMSetRenderTargets(1, &hdr, nullptr);
-    context->OMSetBlendState(premultiplied_.Get(), nullptr, 0xffffffffu);
+    blending_.bindForParticles(context, hdr);
     context->OMSetDepthStencilState(nullptr, 0);
     context->RSSetState(noCulling_.Get());
     const ScatteringLookup* y = atmosphere.yusov;
@@ -147,9 +179,14 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     context->PSSetShaderResources(2, 8, extra);
     ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
     context->PSSetSamplers(0, 2, samplers);
-    particles_.drawInstanced(frame, shadeKey("vs_main", "vs_5_0", bruneton), shadeKey("ps_main", "ps_5_0", bruneton));
+    particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending));
     ID3D11ShaderResourceView* none[8] = {};
     context->PSSetShaderResources(2, 8, none);
+    if (blending != ParticleBlending::Alpha) {
+        auto resolvePass = frame.profiler.scope("Clouds: blending resolve");
+        blending_.resolve(context, frame.shaders, hdr);
+    }
+    context->OMSetRenderTargets(1, &hdr, nullptr);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
 }
 

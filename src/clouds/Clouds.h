@@ -7,6 +7,7 @@
 #include "atmosphere/ScatteringLookup.h"
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
+#include "clouds/VolumeBlendingPass.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
 
@@ -48,11 +49,17 @@ public:
     TableTiming timeTables(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, const CloudSettings& settings,
                            const std::filesystem::path& scratch);
     std::vector<std::pair<std::string, double>> counts(ID3D11Device* device, ID3D11DeviceContext* context);
+    // The blending the last shaded frame used and, for the lists, their counts a few frames late
+    // (the GUI).
+    std::string blendingStatus() const;
+    // The blending the last shaded frame used, and the device's support for the ordered path.
+    ParticleBlending blending() const { return blending_.path(); }
+    BlendingSupport blendingSupport() const { return blendingSupport_; }
 
 private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);
     void drawOpticalDepth(FrameContext& frame, const ParticleTables& tables);
-    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere);
+    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending);
     const Texture3D& scatteringTable(ID3D11Device* device);
 
     TableStorage storage_;
@@ -64,6 +71,8 @@ private:
     ConstantBuffer<gpu::CloudShadingConstants> shadingConstants_;
     ParticleScatteringParameters scatteringParameters_;
     Texture3D scattering_;  // R32G32_FLOAT: single scattering (phase excluded), multiple
+    BlendingSupport blendingSupport_;
+    VolumeBlendingPass blending_;
 };
 
 }  // namespace firmament

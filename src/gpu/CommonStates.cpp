@@ -43,6 +43,20 @@ ComPtr<ID3D11DepthStencilState> depthStencil(ID3D11Device* device, bool enable, 
 
 }  // namespace
 
+ComPtr<ID3D11BlendState> noColourWrites(ID3D11Device* device) {
+    D3D11_BLEND_DESC desc{};
+    desc.RenderTarget[0].SrcBlend = D3D11_BLEND_ONE;
+    desc.RenderTarget[0].DestBlend = D3D11_BLEND_ZERO;
+    desc.RenderTarget[0].BlendOp = D3D11_BLEND_OP_ADD;
+    desc.RenderTarget[0].SrcBlendAlpha = D3D11_BLEND_ONE;
+    desc.RenderTarget[0].DestBlendAlpha = D3D11_BLEND_ZERO;
+    desc.RenderTarget[0].BlendOpAlpha = D3D11_BLEND_OP_ADD;
+    desc.RenderTarget[0].RenderTargetWriteMask = 0;
+    ComPtr<ID3D11BlendState> state;
+    check(device->CreateBlendState(&desc, &state), "CreateBlendState (no colour writes)");
+    return state;
+}
+
 ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device) {
     D3D11_BLEND_DESC desc{};
     D3D11_RENDER_TARGET_BLEND_DESC& target = desc.RenderTarget[0];

@@ -29,6 +29,9 @@ ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScal
 // Premultiplied alpha over what is there: dst = src.rgb + (1 - src.a) dst.rgb (translucent
 // layers drawn back to front); the target's alpha is kept.
 ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device);
+// Writes no colour: for pixel shaders that only write views, with the target bound so that the
+// pass has the target's size (Wine otherwise draws into whichever framebuffer it last had bound).
+ComPtr<ID3D11BlendState> noColourWrites(ID3D11Device* device);
 
 // Depth-stencil states. Firmament's depth is reversed (1 at the near plane, 0 at the far one,
 // cleared to 0; src/core/Camera.h), so "nearer or equal" is GREATER_EQUAL.

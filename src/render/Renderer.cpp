@@ -147,7 +147,8 @@ bool Renderer::lightShaftsDrawn(const State& state) const {
 double Renderer::groundY(double x, double z) const { return terrain_->groundY(x, z); }
 
 RendererStatus Renderer::status(const State& state) {
-    return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress(), clouds_->tableProgress()};
+    return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress(), clouds_->tableProgress(),
+            clouds_->blendingStatus()};
 }
 
 std::vector<TableTiming> Renderer::timeTables(const State& state, const std::filesystem::path& scratch) {

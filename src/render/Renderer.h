@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace firmament {
 
@@ -43,6 +44,7 @@ struct RendererStatus {
     ExposureReading exposure;                  // what the tone mapping applied, a few frames ago
     std::optional<double> atmosphereProgress;  // 0..1 while the atmosphere's tables are computed
     std::optional<double> cloudTableProgress;  // 0..1 while the cloud particle's tables are computed
+    std::string cloudBlending;                 // how the clouds' particles are blended, and what did not fit
 };
 
 class Renderer {

@@ -35,6 +35,7 @@ struct GuiModel {
     ExposureReading exposure;          // what the tone mapping applied, a few frames ago
     std::optional<double> atmosphereProgress;  // 0..1 while the atmosphere's tables are recomputed
     std::optional<double> cloudTableProgress;  // 0..1 while the cloud particle's tables are computed
+    std::string cloudBlending;                 // how the clouds' particles are blended, and what did not fit
 };
 
 struct GuiRequests {

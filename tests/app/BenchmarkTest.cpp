@@ -73,7 +73,7 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
         }
         for (const char* pass : {"Clear frame targets", "Shadow cascades", "Terrain", "Sky", "Aerial perspective", "Scene luminance",
                                  "Light adaptation", "Tone mapping", "Clouds: valid cells", "Clouds: particle generation", "Clouds: sort",
-                                 "Clouds: shading"})
+                                 "Clouds: shading", "Clouds: blending resolve"})
             EXPECT_TRUE(passes.count(pass)) << name << " has no pass " << pass;
         EXPECT_FALSE(passes.count("Atmosphere tables (Yusov)")) << "the warm-up frames compute the tables, not the measured ones";
         frames[s["variant"]] = s["frame"]["gpu"]["medianMs"].get<double>();
@@ -81,6 +81,8 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
         EXPECT_GT(s["counts"]["cloud valid cells"].get<double>(), 0.0) << name;
         EXPECT_GE(s["counts"]["cloud particles"].get<double>(), s["counts"]["cloud valid cells"].get<double>()) << name;
         EXPECT_EQ(s["counts"]["cloud particles over capacity"].get<double>(), 0.0) << name;
+        // Volume-aware blending by default, through the per-pixel lists here: their fragments.
+        EXPECT_GT(s["counts"]["cloud fragments"].get<double>(), 0.0) << name;
     }
     ASSERT_EQ(report["ratios"].size(), 1u);
     const json& ratio = report["ratios"][0];

@@ -113,6 +113,40 @@ TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
     }
 }
 
+// Volume-aware blending (docs/clouds.md, "Blending") against plain alpha blending, from below
+// broken clouds: the same where no particle is, different where particles are (where they
+// intersect), similar on the whole; Auto runs the per-pixel lists here, bit for bit.
+TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
+    const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=10", L"clouds.cloudiness=0.35"};
+    auto with = [&](const wchar_t* extra, const wchar_t* more = nullptr) {
+        std::vector<std::wstring> all = below;
+        all.push_back(extra);
+        if (more) all.push_back(more);
+        return all;
+    };
+    const std::vector<float> clear = capture("blend-clear", with(L"clouds.enabled=off"));
+    const std::vector<float> alpha = capture("blend-alpha", with(L"clouds.volumetricBlending=off"));
+    const std::vector<float> volume = capture("blend-volume", with(L"clouds.volumetricBlending=on"));
+    const std::vector<float> lists = capture("blend-lists", with(L"clouds.volumetricBlending=on", L"clouds.blendingPath=Per-pixel lists"));
+    ASSERT_FALSE(clear.empty());
+    ASSERT_EQ(volume.size(), alpha.size());
+    EXPECT_TRUE(allFinite(volume));
+    size_t empty = 0, emptyChanged = 0;
+    for (size_t i = 0; i < clear.size(); ++i) {
+        if (std::abs(alpha[i] - clear[i]) > 1e-6f * std::abs(clear[i])) continue;  // a particle covers it
+        ++empty;
+        emptyChanged += std::abs(volume[i] - clear[i]) > 0.01f * std::abs(clear[i]) + 1e-6f;
+    }
+    const double differs = changedShare(alpha, volume);
+    std::printf("values without particles: %zu, of them changed by volume-aware blending: %zu; values that differ from alpha blending: %.1f%%\n", empty,
+                emptyChanged, 100.0 * differs);
+    EXPECT_GT(empty, clear.size() / 10);
+    EXPECT_LE(emptyChanged, empty / 200);  // (a particle too thin to change alpha blending by 1e-6 may show)
+    EXPECT_GT(differs, 0.05);
+    EXPECT_NEAR(mean(volume) / mean(alpha), 1.0, 0.25);
+    EXPECT_EQ(lists, volume);
+}
+
 TEST(CloudCapture, ShadedCloudsAreFiniteFromTheGroundToOrbitAtNoonSunsetAndNight) {
     const wchar_t* const places[] = {L"camera.position=0,200,0", L"camera.position=0,3000,0", L"camera.position=0,9000,0",
                                      L"camera.position=0,400000,0"};

@@ -35,7 +35,8 @@ public:
         const FrameTimeHistory frameTimes;
         const std::map<std::string, std::string> shaderErrors{{"terrain", "an error"}};
         GuiModel model{state, FrameStats{16.0, 60.0, 1280, 720, "test"}, timings, frameTimes, shaderErrors, "vkd3d-compiler",
-                       {"a pad"}, "a notice", false, ExposureReading{true, 0.2f, 0.9f}, 0.5, 0.25};
+                       {"a pad"}, "a notice", false, ExposureReading{true, 0.2f, 0.9f}, 0.5, 0.25,
+                       "volume-aware, per-pixel lists: 10 fragments"};
         ImGui::NewFrame();
         drawGui(model);
         ImGui::Render();
@@ -80,7 +81,7 @@ TEST(Panels, AMissingKeyOrSectionIsAnErrorThatNamesIt) {
     const std::vector<PassTiming> timings;
     const FrameTimeHistory frameTimes;
     const std::map<std::string, std::string> errors;
-    GuiModel model{state, {}, timings, frameTimes, errors, "", {}, "", false, {}, std::nullopt, std::nullopt};
+    GuiModel model{state, {}, timings, frameTimes, errors, "", {}, "", false, {}, std::nullopt, std::nullopt, ""};
     PanelContext panel{model, sections, requests};
     ImGui::NewFrame();
     ImGui::Begin("test");

@@ -1,6 +1,7 @@
 // The Clouds panel: the cell grid (rings, their dimension, layers, particle distance), the layer
 // (altitude, thickness), the cloudiness, the density map's resolution and the wind, and the view
-// of the particles' bounding shapes. The grid's size in cells and particles is shown under it.
+// of the particles' bounding shapes; the blending (volume-aware or alpha, the pixel-ordering path)
+// and what the running path reports. The grid's size in cells and particles is shown under it.
 #include "clouds/CloudField.h"
 #include "clouds/CloudGrid.h"
 #include "ui/panels/TechniquePanels.h"
@@ -17,6 +18,9 @@ void clouds(PanelContext& panel) {
     const AtmosphereSettings& a = panel.model.state.atmosphere;
     if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
+    ImGui::SeparatorText("Blending");
+    editSettings(panel, "clouds", {"volumetricBlending", "blendingPath"});
+    if (c.enabled && !panel.model.cloudBlending.empty()) ImGui::TextWrapped("Running: %s", panel.model.cloudBlending.c_str());
     if (const std::optional<double> progress = panel.model.cloudTableProgress)
         ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
     ImGui::SeparatorText("Layer");
