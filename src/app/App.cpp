@@ -202,8 +202,7 @@ int App::run() {
     const int frames = flight_ && options_.headless && !options_.frames
                            ? static_cast<int>(std::ceil(flight_->duration() * 60.0)) + 1
                            : options_.frameCount();
-    if (flight_) log::info("playing a flight of " + std::to_string(flight_->size()) + " keyframes over " +
-                           std::to_string(flight_->duration()) + " s");
+    if (flight_) log::info("playing " + flight_->describe());
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         if (!window_->processMessages()) break;
         if (window_->minimized()) {
@@ -251,10 +250,13 @@ void App::update() {
     FlightInput input = keyboardMouse_.takeFrameInput(state_.flight);
     input += hidDevices_.poll(now, state_.devices);
     input += xinputPads_.poll(now, state_.devices);
-    if (flight_ && now <= flight_->duration()) {
-        const Bookmark view = flight_->at(now);  // the recorded path drives; input waits for its end
+    if (flight_ && !flightDone_) {
+        // The recorded path drives, and input waits for its end. The frame at or past the end shows
+        // the last keyframe exactly: a one-keyframe flight is a still view.
+        const Bookmark view = flight_->at(now);
         state_.camera = view.camera;
         state_.sun = view.sun;
+        flightDone_ = now >= flight_->duration();
     } else {
         fly(state_.camera, state_.sun, state_.flight, input, dt);
         if (state_.atmosphere.animateSun) animateSun(state_.sun, dt);

@@ -60,6 +60,7 @@ private:
     XInputPads xinputPads_;
 
     std::optional<FlightPath> flight_;
+    bool flightDone_ = false;  // the flight's last keyframe has been shown
     FlightPath recording_;
     StepTimer timer_;
     FrameTimeHistory frameTimes_;

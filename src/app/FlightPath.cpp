@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace firmament {
 
@@ -66,6 +67,13 @@ void FlightPath::save(const std::filesystem::path& path) const {
     }
     const std::string text = json{{"format", 1}, {"keyframes", frames}}.dump(2) + "\n";
     writeFileBytes(path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
+std::string FlightPath::describe() const {
+    if (keyframes_.size() == 1) return "a still view (one keyframe)";
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%.1f", duration());
+    return "a flight of " + std::to_string(keyframes_.size()) + " keyframes over " + seconds + " s";
 }
 
 void FlightPath::add(double time, const Camera& camera, const Sun& sun) { keyframes_.push_back({time, Bookmark{camera, sun}}); }

@@ -8,6 +8,7 @@
 #include "settings/State.h"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace firmament {
@@ -27,6 +28,8 @@ public:
     Bookmark at(double time) const;  // clamped to the first and last keyframes
     double duration() const { return keyframes_.empty() ? 0.0 : keyframes_.back().time; }
     size_t size() const { return keyframes_.size(); }
+    // For the log: "a flight of 12 keyframes over 8.5 s", or "a still view (one keyframe)".
+    std::string describe() const;
 
 private:
     std::vector<FlightKeyframe> keyframes_;

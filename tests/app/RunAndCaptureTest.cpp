@@ -208,6 +208,30 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
     std::filesystem::remove_all(folder);
 }
 
+// A flight of one keyframe is the way to save and share a view: it sets the camera and the sun
+// exactly, at any time of its keyframe, and the log says what it is.
+TEST(HeadlessRun, AOneKeyframeFlightSetsTheCameraAndSunExactly) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-still-view";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    for (const char* time : {"0", "2.5"}) {
+        std::ofstream(folder / "view.json") << R"({"keyframes": [{"time": )" << time << R"(,
+            "camera": {"position": [1200, 2600, -3400], "yaw": 135, "pitch": -12},
+            "sun": {"elevation": 14, "azimuth": -150}}]})";
+        const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--frames", L"3", L"--flight",
+                                                              (folder / "view.json").wstring(), L"--capture", (folder / "view.png").wstring()});
+        ASSERT_EQ(run.exitCode, 0u) << run.output;
+        EXPECT_NE(run.output.find("playing a still view (one keyframe)"), std::string::npos) << run.output;
+        const auto settings = nlohmann::json::parse(std::get<std::string>(readExr(folder / "view.exr").attributes.at("firmament.settings")));
+        EXPECT_EQ(settings["camera"]["position"], nlohmann::json::array({1200.0, 2600.0, -3400.0})) << "keyframe at " << time;
+        EXPECT_EQ(settings["camera"]["yaw"], 135.0) << "keyframe at " << time;
+        EXPECT_EQ(settings["camera"]["pitch"], -12.0) << "keyframe at " << time;
+        EXPECT_EQ(settings["sun"]["elevation"], 14.0) << "keyframe at " << time;
+        EXPECT_EQ(settings["sun"]["azimuth"], -150.0) << "keyframe at " << time;
+    }
+    std::filesystem::remove_all(folder);
+}
+
 // A visible window: the flip-model swap chain, presentation without VSync, and the capture
 // read from the back buffer before it is presented.
 TEST(WindowedRun, PresentsThroughTheSwapChainAndCaptures) {

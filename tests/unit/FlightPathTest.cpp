@@ -30,6 +30,16 @@ TEST(FlightPath, InterpolatesBetweenKeyframesTheShortWayRound) {
     EXPECT_EQ(flight.at(9.0).camera.position, b.position);
 }
 
+TEST(FlightPath, DescribesItselfInPlainEnglish) {
+    FlightPath flight;
+    const Camera camera;
+    const Sun sun;
+    flight.add(0.0, camera, sun);
+    EXPECT_EQ(flight.describe(), "a still view (one keyframe)");
+    flight.add(8.49, camera, sun);
+    EXPECT_EQ(flight.describe(), "a flight of 2 keyframes over 8.5 s");
+}
+
 TEST(FlightPath, SavedFlightsLoadBack) {
     const auto path = std::filesystem::temp_directory_path() / "firmament-flight-test.json";
     FlightPath flight;
