@@ -7,7 +7,7 @@ ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) 
 
 float4 ps_main(ShapeVertex input, out float depth : SV_Depth) : SV_Target {
     CloudParticle p = particles[input.slot];
-    float3 direction = pixelDirection(input.position);
+    float3 direction = pixelDirection(input.position, frame.screen.zw);
     ParticleHit hit;
     if (!hitParticle(p, direction, hit)) discard;
     float t = hit.near >= 0.0 ? hit.near : hit.far;  // the camera inside: the far side

@@ -37,7 +37,24 @@ struct CloudShadingConstants {
     uint4 modes;       // x: single scattering mode, y: multiple scattering mode, z: integration steps (the atmosphere's); w: unused
     float4 scattering; // the particle scattering table's texels: x entry angles, y view azimuths, z view zeniths; w: unused
     uint4 blending;    // x: the per-pixel lists' node capacity, y: the row of their counters (clouds/fragment_lists.hlsli); zw: unused
+    float4 target;     // the clouds' target (the frame's, or its low-resolution one): width, height, 1 / width, 1 / height
 };
+
+// The light-space grid of the particles' opacity (clouds/light_space.hlsli): an orthographic map
+// seen from the sun. Built by lightSpaceConstants() (src/clouds/LightSpace.h).
+struct CloudLightSpaceConstants {
+    float4 centre;  // xyz: the map's centre (world, m); w: its half-width (m)
+    float4 right;   // xyz: the map's x axis (unit, across the sun); w: tiles along a side
+    float4 up;      // xyz: its y axis (unit, across the sun); w: the early exit's transmittance (0: none)
+    float4 sun;     // xyz: the direction to the sun (unit); w: the node pool's capacity
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudLightSpaceConstants);
+
+// The clouds' low-resolution passes (clouds/downsample_depth.hlsl, upsample_clouds.hlsl).
+struct CloudUpsampleConstants {
+    uint4 sizes;  // x: the downscale factor; y, z: the low-resolution target's width and height; w: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudUpsampleConstants);
 FIRMAMENT_CONSTANT_BUFFER(CloudShadingConstants);
 
 #ifndef __cplusplus

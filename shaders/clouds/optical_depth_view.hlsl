@@ -13,7 +13,7 @@ ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) 
 
 float4 ps_main(ShapeVertex input) : SV_Target {
     ParticlePixel px;
-    if (!particlePixel(input, sceneDepth, opticalDepthTable, linearWrapSampler, px)) discard;
+    if (!particlePixel(input, sceneDepth, frame.screen.zw, opticalDepthTable, linearWrapSampler, px)) discard;
     float3 white = frame.sunIrradiance.rgb * (0.8 / 3.14159265);
     return float4(white * px.opacity, px.opacity);
 }

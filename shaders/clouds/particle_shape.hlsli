@@ -48,9 +48,10 @@ ShapeVertex shapeVertex(uint vertexId, uint instance) {
     return output;
 }
 
-// The pixel's view direction (world, unit).
-float3 pixelDirection(float4 position) {
-    float2 ndc = float2(position.x * frame.screen.z * 2.0 - 1.0, 1.0 - position.y * frame.screen.w * 2.0);
+// The pixel's view direction (world, unit), in a target of 1 / size `inverseSize` (the frame's,
+// or the clouds' low-resolution target's).
+float3 pixelDirection(float4 position, float2 inverseSize) {
+    float2 ndc = float2(position.x * inverseSize.x * 2.0 - 1.0, 1.0 - position.y * inverseSize.y * 2.0);
     float4 farPoint = mul(frame.clipToDirection, float4(ndc, 1.0, 1.0));
     return normalize(farPoint.xyz / farPoint.w);
 }
@@ -67,10 +68,11 @@ struct ParticleHit {
     float3 tangent, normal, bitangent;
 };
 
-bool hitParticle(CloudParticle p, float3 direction, out ParticleHit hit) {
+// The same for the ray from `origin` (near and far then from it).
+bool hitParticleFrom(CloudParticle p, float3 origin, float3 direction, out ParticleHit hit) {
     particleFrame(p.centre.xyz, hit.tangent, hit.normal, hit.bitangent);
     hit.scale = float3(p.centre.w, p.shape.x, p.centre.w);
-    float3 toCamera = frame.cameraPosition.xyz - p.centre.xyz;
+    float3 toCamera = origin - p.centre.xyz;
     float3 o = float3(dot(toCamera, hit.tangent), dot(toCamera, hit.normal), dot(toCamera, hit.bitangent)) / hit.scale;
     float3 d = float3(dot(direction, hit.tangent), dot(direction, hit.normal), dot(direction, hit.bitangent)) / hit.scale;
     float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
@@ -88,11 +90,14 @@ bool hitParticle(CloudParticle p, float3 direction, out ParticleHit hit) {
     return hit.far > 0.0;
 }
 
-// The distance from the camera to the scene at this pixel (far away where nothing was drawn).
-float sceneDistance(Texture2D<float> depthBuffer, float4 position) {
+bool hitParticle(CloudParticle p, float3 direction, out ParticleHit hit) { return hitParticleFrom(p, frame.cameraPosition.xyz, direction, hit); }
+
+// The distance from the camera to the scene at this pixel (far away where nothing was drawn), the
+// depth buffer of the target's size.
+float sceneDistance(Texture2D<float> depthBuffer, float4 position, float2 inverseSize) {
     float depth = depthBuffer.Load(int3(position.xy, 0));
     if (depth <= 0.0) return 3.0e38;
-    float2 ndc = float2(position.x * frame.screen.z * 2.0 - 1.0, 1.0 - position.y * frame.screen.w * 2.0);
+    float2 ndc = float2(position.x * inverseSize.x * 2.0 - 1.0, 1.0 - position.y * inverseSize.y * 2.0);
     float4 world = mul(frame.inverseViewProjection, float4(ndc, depth, 1.0));
     return length(world.xyz / world.w - frame.cameraPosition.xyz);
 }
@@ -120,16 +125,17 @@ struct ParticlePixel {
     float opacity;
 };
 
-bool particlePixel(ShapeVertex input, Texture2D<float> depthBuffer, Texture3D<float> table, SamplerState linearWrap, out ParticlePixel px) {
+bool particlePixel(ShapeVertex input, Texture2D<float> depthBuffer, float2 inverseSize, Texture3D<float> table, SamplerState linearWrap,
+                   out ParticlePixel px) {
     px.particle = particles[input.slot];
-    px.direction = pixelDirection(input.position);
+    px.direction = pixelDirection(input.position, inverseSize);
     px.start = 0.0;
     px.end = 0.0;
     px.opticalDepth = 0.0;
     px.opacity = 0.0;
     if (!hitParticle(px.particle, px.direction, px.hit)) return false;
     px.start = max(px.hit.near, 0.0);
-    px.end = min(px.hit.far, sceneDistance(depthBuffer, input.position));
+    px.end = min(px.hit.far, sceneDistance(depthBuffer, input.position, inverseSize));
     if (px.end <= px.start) return false;
     px.opticalDepth = particleOpticalDepth(px.particle, px.hit, px.end - px.start, table, linearWrap);
     px.opacity = 1.0 - exp(-px.opticalDepth);

@@ -35,8 +35,9 @@ cbuffer AtmosphereBuffer : register(b2) { AtmosphereConstants atmosphere; };
 cbuffer CloudShadingBuffer : register(b3) { CloudShadingConstants shading; };
 
 Texture3D<float> opticalDepthTable : register(t2);
-Texture2D<float> sceneDepth : register(t3);
+Texture2D<float> sceneDepth : register(t3);  // the frame's, or its low-resolution copy (Downscale)
 Texture3D<float2> scatteringTable : register(t4);  // x single scattering (phase excluded), y multiple
+StructuredBuffer<float> particleSunTransmittance : register(t10);  // by slot: through the particles nearer the sun (clouds/particle_opacity.hlsl)
 SamplerState linearWrap : register(s0);
 SamplerState linearClamp : register(s1);
 
@@ -119,7 +120,7 @@ ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) 
 bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     fragment = (ParticleFragment)0;
     ParticlePixel px;
-    if (!particlePixel(input, sceneDepth, opticalDepthTable, linearWrap, px) || px.opacity < 1e-4) return false;
+    if (!particlePixel(input, sceneDepth, shading.target.zw, opticalDepthTable, linearWrap, px) || px.opacity < 1e-4) return false;
     CloudParticle p = px.particle;
     ParticleHit hit = px.hit;
     float3 direction = px.direction;
@@ -131,6 +132,7 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float cosSunZenith = dot(normalize(fromCentre), sun);
     float3 sunLight, skyLight;
     lightAt(altitude, cosSunZenith, sunLight, skyLight);
+    sunLight *= particleSunTransmittance[input.slot];
 
     // The sun in the particle's unit-sphere space.
     float3 l = normalize(float3(dot(sun, hit.tangent) / hit.scale.x, dot(sun, hit.normal) / hit.scale.y, dot(sun, hit.bitangent) / hit.scale.z));

@@ -124,9 +124,10 @@ void CloudParticles::drawBoundingShapes(FrameContext& frame) {
     context->OMSetDepthStencilState(nullptr, 0);
 }
 
-void CloudParticles::drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader) {
+void CloudParticles::drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader, int width, int height) {
     ID3D11DeviceContext* context = frame.context;
-    const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(frame.width()), static_cast<float>(frame.height()), 0.0f, 1.0f};
+    const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width > 0 ? width : frame.width()), static_cast<float>(height > 0 ? height : frame.height()),
+                                  0.0f, 1.0f};
     context->RSSetViewports(1, &viewport);
     context->IASetInputLayout(nullptr);
     context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLESTRIP);

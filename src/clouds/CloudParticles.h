@@ -33,8 +33,9 @@ public:
     // "Show particles": their bounding ellipsoids into the HDR target, with depth.
     void drawBoundingShapes(FrameContext& frame);
     // Every particle, back to front, as a quad over its ellipsoid with these shaders
-    // (clouds/particle_shape.hlsli), into the targets and states the caller bound.
-    void drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader);
+    // (clouds/particle_shape.hlsli), into the targets and states the caller bound, over a viewport
+    // of width x height (0: the frame's).
+    void drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader, int width = 0, int height = 0);
 
     // What update() wrote (tests and the GUI read them back).
     const gpu::CloudFieldConstants& constants() const { return constants_; }
@@ -48,6 +49,11 @@ public:
     ID3D11Buffer* particleArguments() const { return arguments_.buffer.Get(); }
     // (distance bits, slot) in back-to-front order, the first min(count, capacity) entries.
     ID3D11Buffer* sortedKeys() const { return keys_[sortedIndex_].buffer.Get(); }
+    // Views and constants for the passes after this one (the particles' opacity).
+    ID3D11ShaderResourceView* sortedKeysView() const { return keys_[sortedIndex_].srv.Get(); }
+    ID3D11ShaderResourceView* particlesView() const { return particles_.srv.Get(); }
+    ID3D11ShaderResourceView* argumentsView() const { return arguments_.srv.Get(); }
+    ID3D11Buffer* fieldConstants() const { return fieldBuffer_.get(); }
 
 private:
     void resizeGrid(ID3D11Device* device, const CloudSettings& settings);

@@ -22,6 +22,10 @@ inline constexpr std::array<std::string_view, 4> kCloudDensityResolutionNames{"1
 // "Blending path" of volume-aware blending: rasterizer-ordered views where the device has them
 // (Auto), or each pixel's fragments in a list sorted by a resolve pass (src/clouds/ParticleBlending.h).
 enum class BlendingPath { Auto, RasterizerOrdered, PerPixelLists };
+// "Downscale": the clouds rendered at 1/1, 1/2 or 1/4 of the frame's resolution along each side.
+inline constexpr std::array<std::string_view, 3> kCloudDownscaleNames{"1x", "2x", "4x"};
+// "Light-space map resolution": tiles along a side of the grid seen from the sun.
+inline constexpr std::array<std::string_view, 4> kLightSpaceResolutionNames{"256", "512", "1024", "2048"};
 inline constexpr std::array<std::string_view, 3> kBlendingPathNames{"Auto", "Rasterizer-ordered views", "Per-pixel lists"};
 
 struct CloudSettings {
@@ -32,6 +36,18 @@ struct CloudSettings {
     // plain back-to-front alpha blending, for comparison.
     bool volumetricBlending = true;
     BlendingPath blendingPath = BlendingPath::Auto;  // "Blending path"
+    // "Downscale": the clouds rendered at this fraction of the frame's resolution (1, 2 or 4),
+    // then upsampled bilaterally by depth.
+    int downscale = 2;
+    // "Light-space map resolution": the sun's view of the particles in which each particle's
+    // opacity toward the sun is found (a power of two, 256 to 2048).
+    int lightSpaceResolution = 512;
+    // "Light occlusion": each particle lit through the particles nearer the sun (light-space
+    // tiling, Yusov 2014); off, every particle sees the sun unoccluded, as in part 1.
+    bool lightOcclusion = true;
+    // "Opacity early exit": a particle's walk toward the sun stops once its transmittance is
+    // below 0.01 (Yusov 2014); off, it goes on to the particle itself.
+    bool opacityEarlyExit = true;
     // "Show particles": each particle drawn over the scene as its bounding ellipsoid lit by the
     // sun, or white with the transparency of its optical depth (docs/clouds.md).
     ParticleView showParticles = ParticleView::Off;
@@ -55,6 +71,15 @@ struct CloudSettings {
         v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
         v.field("volumetricBlending", volumetricBlending, "Volumetric blending");
         v.choice("blendingPath", blendingPath, kBlendingPathNames, "Blending path");
+        int downscaleIndex = downscale >= 4 ? 2 : downscale >= 2 ? 1 : 0;
+        v.choiceIndex("downscale", downscaleIndex, kCloudDownscaleNames, "Downscale");
+        downscale = 1 << downscaleIndex;
+        int lightSpaceIndex = 0;
+        while (lightSpaceIndex < 3 && (256 << lightSpaceIndex) < lightSpaceResolution) ++lightSpaceIndex;
+        v.field("lightOcclusion", lightOcclusion, "Light occlusion");
+        v.choiceIndex("lightSpaceResolution", lightSpaceIndex, kLightSpaceResolutionNames, "Light-space map resolution");
+        lightSpaceResolution = 256 << lightSpaceIndex;
+        v.field("opacityEarlyExit", opacityEarlyExit, "Opacity early exit");
         v.choice("particleDensity", particleDensity, kParticleDensityMethodNames, "Particle density");
         int resolutionIndex = 0;
         while (resolutionIndex < 3 && (128 << resolutionIndex) < densityResolution) ++resolutionIndex;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <string>
 
 namespace firmament {
@@ -34,7 +35,9 @@ Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
       noCulling_(states::cullNone(device)),
       shadingConstants_(device),
       blendingSupport_(queryBlendingSupport(device)),
-      blending_(device) {
+      blending_(device),
+      lowResolution_(device),
+      opacity_(device) {
     log::info(std::string("clouds: the device ") + (blendingSupport_.rasterizerOrderedViews ? "supports" : "has no") +
               " rasterizer-ordered views; Blending path Auto: " +
               std::string(describeParticleBlending(chooseParticleBlending(true, BlendingPath::Auto, blendingSupport_))));
@@ -82,6 +85,11 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
         result.emplace_back("cloud fragments over the node pool", static_cast<double>(o.nodesDropped));
         result.emplace_back("cloud fragments over a pixel's limit", static_cast<double>(o.fragmentsDropped));
     }
+    if (opacity_.computed()) {
+        const ParticleOpacity::Counts o = opacity_.readCounts(device, context);
+        result.emplace_back("cloud light-space tile nodes", static_cast<double>(o.nodes));
+        result.emplace_back("cloud light-space tile nodes over the pool", static_cast<double>(o.nodesDropped));
+    }
     return result;
 }
 
@@ -108,7 +116,12 @@ void Clouds::renderGeometry(FrameContext& frame, const CloudSettings& settings) 
                                 static_cast<float>(n.directionAzimuth)));
     if (settings.showParticles == ParticleView::BoundingShapes) particles_.drawBoundingShapes(frame);
     else updateTables(frame, settings, frame.finishWorkNow);
-    if (settings.enabled && settings.showParticles == ParticleView::Off) scatteringTable(frame.device);
+    if (settings.enabled && settings.showParticles == ParticleView::Off) {
+        scatteringTable(frame.device);
+        const ParticleTablePrecomputation* tables = tables_.current();
+        if (tables && settings.lightOcclusion) opacity_.compute(frame, particles_, tables->tables(), settings);
+        else opacity_.clear(frame.device, frame.context, particles_.capacity());
+    }
 }
 
 // Show particles replaces the shaded clouds with its view of them.
@@ -118,7 +131,8 @@ void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& setting
     const bool lit = (atmosphere.yusov && atmosphere.yusov->ready) || (atmosphere.bruneton && atmosphere.bruneton->ready);
     if (settings.showParticles == ParticleView::OpticalDepth) drawOpticalDepth(frame, tables->tables());
     else if (settings.showParticles == ParticleView::Off && settings.enabled && lit)
-        drawShaded(frame, tables->tables(), atmosphere, chooseParticleBlending(settings.volumetricBlending, settings.blendingPath, blendingSupport_));
+        drawShaded(frame, tables->tables(), atmosphere, chooseParticleBlending(settings.volumetricBlending, settings.blendingPath, blendingSupport_),
+                   settings.downscale);
 }
 
 const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
@@ -141,11 +155,11 @@ const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
 }
 
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the
-// scene's depth.
-void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending) {
+// scene's depth. At 1x straight over the frame; at 2x and 4x into the low-resolution target, cut
+// by its depth, then upsampled over the frame.
+void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending, int downscale) {
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
-    auto pass = frame.profiler.scope("Clouds: shading");
     const bool bruneton = !(atmosphere.yusov && atmosphere.yusov->ready);
     gpu::CloudShadingConstants c{};
     if (!bruneton)
@@ -153,18 +167,35 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
                              static_cast<unsigned>(atmosphere.yusov->integrationSteps), 0u);
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
                              static_cast<float>(scatteringParameters_.viewZeniths), 0.0f);
-    blending_.begin(frame.device, context, blending, frame.width(), frame.height());
-    c.blending = glm::uvec4(blending_.nodeCapacity(), static_cast<unsigned>(frame.height()), 0u, 0u);
-    shadingConstants_.update(context, c);
     ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
-    blending_.bindForParticles(context, hdr);
+    ID3D11RenderTargetView* target = hdr;
+    ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
+    ID3D11BlendState* blend = nullptr;  // the blending pass's premultiplied alpha
+    int width = frame.width(), height = frame.height();
+    if (downscale > 1) {
+        auto low = frame.profiler.scope("Clouds: low-resolution depth");
+        lowResolution_.begin(frame.device, context, frame.shaders, depth, width, height, downscale);
+        target = lowResolution_.clouds().rtv.Get();
+        depth = lowResolution_.depth().srv.Get();
+        blend = lowResolution_.blendState();
+        width = lowResolution_.clouds().width;
+        height = lowResolution_.clouds().height;
+    }
+    // The passes are timed one after another, none inside another.
+    std::optional<GpuProfiler::Scope> pass;
+    pass.emplace(frame.profiler, "Clouds: shading");
+    blending_.begin(frame.device, context, blending, width, height);
+    c.blending = glm::uvec4(blending_.nodeCapacity(), static_cast<unsigned>(height), 0u, 0u);
+    c.target = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
+    shadingConstants_.update(context, c);
+    blending_.bindForParticles(context, target, blend);
     context->OMSetDepthStencilState(nullptr, 0);
     context->RSSetState(noCulling_.Get());
     const ScatteringLookup* y = atmosphere.yusov;
     const BrunetonLookup* b = atmosphere.bruneton;
     ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere, shadingConstants_.get(), bruneton ? b->bruneton : nullptr};
     context->PSSetConstantBuffers(2, 3, buffers);
-    ID3D11ShaderResourceView* extra[8] = {tables.opticalDepth.srv.Get(), frame.targets.depth().srv.Get(), scattering.srv.Get()};
+    ID3D11ShaderResourceView* extra[8] = {tables.opticalDepth.srv.Get(), depth, scattering.srv.Get()};
     if (bruneton) {
         extra[3] = b->transmittance;
         extra[4] = b->irradiance;
@@ -177,14 +208,21 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         extra[7] = y->ambientLight;
     }
     context->PSSetShaderResources(2, 8, extra);
+    ID3D11ShaderResourceView* sunTransmittance = opacity_.sunTransmittance();
+    context->PSSetShaderResources(10, 1, &sunTransmittance);
     ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
     context->PSSetSamplers(0, 2, samplers);
-    particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending));
-    ID3D11ShaderResourceView* none[8] = {};
-    context->PSSetShaderResources(2, 8, none);
+    particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), width, height);
+    ID3D11ShaderResourceView* none[9] = {};
+    context->PSSetShaderResources(2, 9, none);
+    pass.reset();
     if (blending != ParticleBlending::Alpha) {
         auto resolvePass = frame.profiler.scope("Clouds: blending resolve");
-        blending_.resolve(context, frame.shaders, hdr);
+        blending_.resolve(context, frame.shaders, target, blend);
+    }
+    if (downscale > 1) {
+        auto upsample = frame.profiler.scope("Clouds: upsample");
+        lowResolution_.upsample(context, frame.shaders, frame.targets.depth().srv.Get(), hdr, frame.width(), frame.height());
     }
     context->OMSetRenderTargets(1, &hdr, nullptr);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);

@@ -7,6 +7,8 @@
 #include "atmosphere/ScatteringLookup.h"
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
+#include "clouds/LowResolution.h"
+#include "clouds/ParticleOpacity.h"
 #include "clouds/VolumeBlendingPass.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
@@ -40,6 +42,7 @@ public:
     // The particle tables for `settings`, computed or loaded now (tests, benchmarks).
     const ParticleTablePrecomputation& tables(FrameContext& frame, const CloudSettings& settings);
     CloudParticles& particles() { return particles_; }
+    const ParticleOpacity& opacity() const { return opacity_; }
     // 0..1 while the particle tables are computed over frames.
     std::optional<double> tableProgress() const;
 
@@ -59,7 +62,7 @@ public:
 private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);
     void drawOpticalDepth(FrameContext& frame, const ParticleTables& tables);
-    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending);
+    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending, int downscale);
     const Texture3D& scatteringTable(ID3D11Device* device);
 
     TableStorage storage_;
@@ -73,6 +76,8 @@ private:
     Texture3D scattering_;  // R32G32_FLOAT: single scattering (phase excluded), multiple
     BlendingSupport blendingSupport_;
     VolumeBlendingPass blending_;
+    CloudLowResolution lowResolution_;
+    ParticleOpacity opacity_;
 };
 
 }  // namespace firmament

@@ -79,7 +79,7 @@ void VolumeBlendingPass::begin(ID3D11Device* device, ID3D11DeviceContext* contex
     }
 }
 
-void VolumeBlendingPass::bindForParticles(ID3D11DeviceContext* context, ID3D11RenderTargetView* target) const {
+void VolumeBlendingPass::bindForParticles(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, ID3D11BlendState* blend) const {
     if (path_ == ParticleBlending::PerPixelLists) {
         // The lists' pixel shader writes no colour; the target stays bound, unwritten.
         ID3D11UnorderedAccessView* views[] = {heads_.uav.Get(), nodes_.uav.Get()};
@@ -93,7 +93,7 @@ void VolumeBlendingPass::bindForParticles(ID3D11DeviceContext* context, ID3D11Re
     } else {
         context->OMSetRenderTargets(1, &target, nullptr);
     }
-    context->OMSetBlendState(premultiplied_.Get(), nullptr, 0xffffffffu);
+    context->OMSetBlendState(blend ? blend : premultiplied_.Get(), nullptr, 0xffffffffu);
 }
 
 void VolumeBlendingPass::bindListsForCompute(ID3D11DeviceContext* context) const {
@@ -101,13 +101,13 @@ void VolumeBlendingPass::bindListsForCompute(ID3D11DeviceContext* context) const
     context->CSSetUnorderedAccessViews(1, 2, views, nullptr);
 }
 
-void VolumeBlendingPass::resolve(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11RenderTargetView* target) {
+void VolumeBlendingPass::resolve(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11RenderTargetView* target, ID3D11BlendState* blend) {
     if (path_ == ParticleBlending::Alpha) return;
     const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width_), static_cast<float>(height_), 0.0f, 1.0f};
     context->RSSetViewports(1, &viewport);
     context->RSSetState(noCulling_.Get());
     context->OMSetDepthStencilState(noDepth_.Get(), 0);
-    context->OMSetBlendState(premultiplied_.Get(), nullptr, 0xffffffffu);
+    context->OMSetBlendState(blend ? blend : premultiplied_.Get(), nullptr, 0xffffffffu);
     context->IASetInputLayout(nullptr);
     context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
     context->VSSetShader(shaders.vertexShader(kResolveVertexShader), nullptr, 0);

@@ -43,11 +43,12 @@ public:
     void begin(ID3D11Device* device, ID3D11DeviceContext* context, ParticleBlending path, int width, int height);
     // Binds the target, its blending (premultiplied alpha; no colour writes for the lists) and the
     // views the particles' pixel shader writes, from u1.
-    void bindForParticles(ID3D11DeviceContext* context, ID3D11RenderTargetView* target) const;
+    // `blend`: the layers' blending (nullptr: premultiplied alpha that keeps the target's alpha).
+    void bindForParticles(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, ID3D11BlendState* blend = nullptr) const;
     // The lists' views at u1 and u2 of the compute stage (tests append synthetic fragments).
     void bindListsForCompute(ID3D11DeviceContext* context) const;
     // Blends what the particles left over `target` (premultiplied alpha), and unbinds the views.
-    void resolve(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11RenderTargetView* target);
+    void resolve(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11RenderTargetView* target, ID3D11BlendState* blend = nullptr);
 
     ParticleBlending path() const { return path_; }
     unsigned nodeCapacity() const { return capacity_; }

@@ -57,7 +57,8 @@ ComPtr<ID3D11BlendState> noColourWrites(ID3D11Device* device) {
     return state;
 }
 
-ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device) {
+// Premultiplied colour (src + (1 - src.a) dst), the target's alpha scaled by `destinationAlpha`.
+ComPtr<ID3D11BlendState> premultipliedColour(ID3D11Device* device, D3D11_BLEND destinationAlpha, const char* what) {
     D3D11_BLEND_DESC desc{};
     D3D11_RENDER_TARGET_BLEND_DESC& target = desc.RenderTarget[0];
     target.BlendEnable = TRUE;
@@ -65,12 +66,20 @@ ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device) {
     target.DestBlend = D3D11_BLEND_INV_SRC_ALPHA;
     target.BlendOp = D3D11_BLEND_OP_ADD;
     target.SrcBlendAlpha = D3D11_BLEND_ZERO;
-    target.DestBlendAlpha = D3D11_BLEND_ONE;
+    target.DestBlendAlpha = destinationAlpha;
     target.BlendOpAlpha = D3D11_BLEND_OP_ADD;
     target.RenderTargetWriteMask = D3D11_COLOR_WRITE_ENABLE_ALL;
     ComPtr<ID3D11BlendState> state;
-    check(device->CreateBlendState(&desc, &state), "CreateBlendState (premultiplied alpha)");
+    check(device->CreateBlendState(&desc, &state), what);
     return state;
+}
+
+ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device) {
+    return premultipliedColour(device, D3D11_BLEND_ONE, "CreateBlendState (premultiplied alpha)");
+}
+
+ComPtr<ID3D11BlendState> premultipliedAlphaTransmittance(ID3D11Device* device) {
+    return premultipliedColour(device, D3D11_BLEND_INV_SRC_ALPHA, "CreateBlendState (premultiplied alpha, transmittance)");
 }
 
 ComPtr<ID3D11SamplerState> linearClamp(ID3D11Device* device) {

@@ -29,6 +29,9 @@ ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScal
 // Premultiplied alpha over what is there: dst = src.rgb + (1 - src.a) dst.rgb (translucent
 // layers drawn back to front); the target's alpha is kept.
 ComPtr<ID3D11BlendState> premultipliedAlpha(ID3D11Device* device);
+// The same, with the target's alpha multiplied by each layer's transmittance (1 - src.a): cleared
+// to 1, it ends as the transmittance through every layer.
+ComPtr<ID3D11BlendState> premultipliedAlphaTransmittance(ID3D11Device* device);
 // Writes no colour: for pixel shaders that only write views, with the target bound so that the
 // pass has the target's size (Wine otherwise draws into whichever framebuffer it last had bound).
 ComPtr<ID3D11BlendState> noColourWrites(ID3D11Device* device);

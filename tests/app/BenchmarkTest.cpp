@@ -73,7 +73,8 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
         }
         for (const char* pass : {"Clear frame targets", "Shadow cascades", "Terrain", "Sky", "Aerial perspective", "Scene luminance",
                                  "Light adaptation", "Tone mapping", "Clouds: valid cells", "Clouds: particle generation", "Clouds: sort",
-                                 "Clouds: shading", "Clouds: blending resolve"})
+                                 "Clouds: shading", "Clouds: blending resolve", "Clouds: low-resolution depth", "Clouds: upsample",
+                                 "Clouds: light-space tiling", "Clouds: particle opacity"})
             EXPECT_TRUE(passes.count(pass)) << name << " has no pass " << pass;
         EXPECT_FALSE(passes.count("Atmosphere tables (Yusov)")) << "the warm-up frames compute the tables, not the measured ones";
         frames[s["variant"]] = s["frame"]["gpu"]["medianMs"].get<double>();
@@ -83,6 +84,8 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
         EXPECT_EQ(s["counts"]["cloud particles over capacity"].get<double>(), 0.0) << name;
         // Volume-aware blending by default, through the per-pixel lists here: their fragments.
         EXPECT_GT(s["counts"]["cloud fragments"].get<double>(), 0.0) << name;
+        // Light occlusion: the particles tiled from the sun.
+        EXPECT_GE(s["counts"]["cloud light-space tile nodes"].get<double>(), s["counts"]["cloud particles"].get<double>()) << name;
     }
     ASSERT_EQ(report["ratios"].size(), 1u);
     const json& ratio = report["ratios"][0];

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cwchar>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@ constexpr int kWidth = 96, kHeight = 54;
 std::vector<float> capture(const std::string& name, std::vector<std::wstring> settings) {
     settings.insert(settings.begin(), {L"camera.position=0,8000,0", L"camera.pitch=-30", L"sun.elevation=35"});
     return captureRadiance(std::filesystem::temp_directory_path() / "firmament-clouds", name, settings, kWidth, kHeight);
+}
+
+// `base` and `extra` settings.
+std::vector<std::wstring> plus(std::vector<std::wstring> base, std::initializer_list<const wchar_t*> extra) {
+    base.insert(base.end(), extra.begin(), extra.end());
+    return base;
 }
 
 double mean(const std::vector<float>& v) {
@@ -92,15 +99,10 @@ TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
     for (const wchar_t* model : {L"atmosphere.model=Yusov 2013", L"atmosphere.model=Bruneton 2008"}) {
         const std::string name(model + std::wcslen(L"atmosphere.model="), model + std::wcslen(model));
         const std::vector<std::wstring> below{model, L"camera.position=0,1500,0", L"camera.pitch=25", L"clouds.cloudiness=1"};
-        auto with = [&](std::vector<std::wstring> extra) {
-            std::vector<std::wstring> all = below;
-            all.insert(all.end(), extra.begin(), extra.end());
-            return all;
-        };
         const std::string tag = name.substr(0, 4);
-        const std::vector<float> clearNoon = capture("clear-noon-" + tag, with({L"sun.elevation=50", L"clouds.enabled=off"}));
-        const std::vector<float> cloudyNoon = capture("cloudy-noon-" + tag, with({L"sun.elevation=50", L"clouds.enabled=on"}));
-        const std::vector<float> cloudySunset = capture("cloudy-sunset-" + tag, with({L"sun.elevation=3", L"clouds.enabled=on"}));
+        const std::vector<float> clearNoon = capture("clear-noon-" + tag, plus(below, {L"sun.elevation=50", L"clouds.enabled=off"}));
+        const std::vector<float> cloudyNoon = capture("cloudy-noon-" + tag, plus(below, {L"sun.elevation=50", L"clouds.enabled=on"}));
+        const std::vector<float> cloudySunset = capture("cloudy-sunset-" + tag, plus(below, {L"sun.elevation=3", L"clouds.enabled=on"}));
         ASSERT_FALSE(clearNoon.empty());
         EXPECT_TRUE(allFinite(cloudyNoon)) << name;
         EXPECT_TRUE(allFinite(cloudySunset)) << name;
@@ -118,16 +120,10 @@ TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
 // intersect), similar on the whole; Auto runs the per-pixel lists here, bit for bit.
 TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
     const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=10", L"clouds.cloudiness=0.35"};
-    auto with = [&](const wchar_t* extra, const wchar_t* more = nullptr) {
-        std::vector<std::wstring> all = below;
-        all.push_back(extra);
-        if (more) all.push_back(more);
-        return all;
-    };
-    const std::vector<float> clear = capture("blend-clear", with(L"clouds.enabled=off"));
-    const std::vector<float> alpha = capture("blend-alpha", with(L"clouds.volumetricBlending=off"));
-    const std::vector<float> volume = capture("blend-volume", with(L"clouds.volumetricBlending=on"));
-    const std::vector<float> lists = capture("blend-lists", with(L"clouds.volumetricBlending=on", L"clouds.blendingPath=Per-pixel lists"));
+    const std::vector<float> clear = capture("blend-clear", plus(below, {L"clouds.enabled=off"}));
+    const std::vector<float> alpha = capture("blend-alpha", plus(below, {L"clouds.volumetricBlending=off"}));
+    const std::vector<float> volume = capture("blend-volume", plus(below, {L"clouds.volumetricBlending=on"}));
+    const std::vector<float> lists = capture("blend-lists", plus(below, {L"clouds.volumetricBlending=on", L"clouds.blendingPath=Per-pixel lists"}));
     ASSERT_FALSE(clear.empty());
     ASSERT_EQ(volume.size(), alpha.size());
     EXPECT_TRUE(allFinite(volume));
@@ -145,6 +141,73 @@ TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
     EXPECT_GT(differs, 0.05);
     EXPECT_NEAR(mean(volume) / mean(alpha), 1.0, 0.25);
     EXPECT_EQ(lists, volume);
+}
+
+// Downscale (docs/clouds.md, "Low-resolution rendering"): at 2x and 4x the clouds keep their
+// light on the whole, and the terrain the clouds do not cover keeps its own, but for the pixels
+// along its silhouette.
+TEST(CloudCapture, DownscaleKeepsTheCloudsAndTheTerrainsEdges) {
+    const std::vector<std::wstring> view{L"camera.position=0,1500,0", L"camera.pitch=4", L"camera.yaw=30", L"clouds.cloudiness=0.5"};
+    const std::vector<float> clear = capture("downscale-clear", plus(view, {L"clouds.enabled=off"}));
+    const std::vector<float> full = capture("downscale-1x", plus(view, {L"clouds.downscale=1x"}));
+    ASSERT_FALSE(full.empty());
+    for (const wchar_t* setting : {L"clouds.downscale=2x", L"clouds.downscale=4x"}) {
+        const std::string name(setting + std::wcslen(L"clouds.downscale="), setting + std::wcslen(setting));
+        const std::vector<float> low = capture("downscale-" + name, plus(view, {setting}));
+        ASSERT_EQ(low.size(), full.size()) << name;
+        EXPECT_TRUE(allFinite(low)) << name;
+        // Where the clouds leave the frame as it was at full resolution (the terrain and sky they do
+        // not cover), farther than the factor's pixels from any they cover, the low resolution
+        // leaves it too: the clouds behind the mountains stay cut at their silhouettes.
+        const int factor = name == "2x" ? 2 : 4;
+        auto covered = [&](int x, int y) {
+            for (int c = 0; c < 3; ++c) {
+                const size_t i = (static_cast<size_t>(y) * kWidth + x) * 3 + c;
+                if (std::abs(full[i] - clear[i]) > 1e-4f * std::abs(clear[i]) + 1e-7f) return true;
+            }
+            return false;
+        };
+        size_t uncovered = 0, changed = 0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                bool nearClouds = false;
+                for (int dy = -factor; dy <= factor && !nearClouds; ++dy)
+                    for (int dx = -factor; dx <= factor && !nearClouds; ++dx)
+                        nearClouds = covered(std::clamp(x + dx, 0, kWidth - 1), std::clamp(y + dy, 0, kHeight - 1));
+                if (nearClouds) continue;
+                ++uncovered;
+                for (int c = 0; c < 3; ++c) {
+                    const size_t i = (static_cast<size_t>(y) * kWidth + x) * 3 + c;
+                    changed += std::abs(low[i] - clear[i]) > 0.01f * std::abs(clear[i]) + 1e-6f;
+                }
+            }
+        const double cloudShare = changedShare(clear, full);
+        std::printf("%s: values the clouds change %.1f%%; of the %zu pixels away from them, %zu values changed at low resolution; mean %.4f against %.4f at 1x\n",
+                    name.c_str(), 100.0 * cloudShare, uncovered, changed, mean(low), mean(full));
+        EXPECT_GT(cloudShare, 0.1) << name;
+        EXPECT_GT(uncovered, static_cast<size_t>(kWidth * kHeight / 10)) << name;
+        EXPECT_EQ(changed, 0u) << name;
+        EXPECT_NEAR(mean(low) / mean(full), 1.0, 0.03) << name;
+    }
+}
+
+// Light occlusion (docs/clouds.md): seen from below, the particles under others are lit through
+// them, so the clouds overhead are darker with it than without; every map resolution is finite.
+TEST(CloudCapture, LightOcclusionDarkensTheCloudsFromBelow) {
+    const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=25", L"clouds.cloudiness=0.8", L"sun.elevation=50"};
+    const std::vector<float> unoccluded = capture("occlusion-off", plus(below, {L"clouds.lightOcclusion=off"}));
+    const std::vector<float> occluded = capture("occlusion-on", plus(below, {L"clouds.lightOcclusion=on"}));
+    ASSERT_FALSE(unoccluded.empty());
+    ASSERT_EQ(occluded.size(), unoccluded.size());
+    const double ratio = mean(occluded) / mean(unoccluded);
+    std::printf("the clouds from below with light occlusion: %.3f of their radiance without\n", ratio);
+    EXPECT_LT(ratio, 0.9);
+    EXPECT_GT(ratio, 0.2);
+    for (const wchar_t* resolution : {L"clouds.lightSpaceResolution=256", L"clouds.lightSpaceResolution=2048"}) {
+        const std::vector<float> frame = capture("occlusion-map", plus(below, {resolution}));
+        EXPECT_TRUE(allFinite(frame)) << std::string(resolution, resolution + std::wcslen(resolution));
+        EXPECT_LT(mean(frame) / mean(unoccluded), 0.95) << std::string(resolution, resolution + std::wcslen(resolution));
+    }
 }
 
 TEST(CloudCapture, ShadedCloudsAreFiniteFromTheGroundToOrbitAtNoonSunsetAndNight) {

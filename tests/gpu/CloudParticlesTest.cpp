@@ -5,6 +5,9 @@
 #include "FrameTest.h"
 #include "clouds/CloudField.h"
 #include "clouds/CloudParticles.h"
+#include "clouds/LightSpace.h"
+#include "clouds/ParticleOpacity.h"
+#include "clouds/ParticleTables.h"
 #include "core/Camera.h"
 #include "render/FrameContext.h"
 
@@ -41,6 +44,12 @@ protected:
 
     // One update for a camera at `position` looking along +z, at `seconds`.
     void generate(const CloudSettings& settings, glm::vec3 position, double seconds) {
+        FrameContext frame = frameAt(position, seconds);
+        clouds->update(frame, settings);
+    }
+
+    // The frame for a camera at `position` looking along +z, at `seconds`.
+    FrameContext frameAt(glm::vec3 position, double seconds) {
         camera.position = position;
         camera.pitchDegrees = 10.0f;
         const glm::mat4 viewProjection = camera.projection(static_cast<float>(kWidth) / kHeight) * camera.view();
@@ -52,9 +61,8 @@ protected:
         constants.screen = glm::vec4(kWidth, kHeight, 1.0f / kWidth, 1.0f / kHeight);
         constants.planet = glm::vec4(kEarthRadius, 0.0f, 0.0f, 0.0f);
         frameConstants->update(context(), constants);
-        FrameContext frame{device(), context(), *productShaderLibrary, *profiler, targets, frameConstants->get(), constants, camera, sun,
-                           seconds, 1.0 / 60.0, true};
-        clouds->update(frame, settings);
+        return FrameContext{device(), context(), *productShaderLibrary, *profiler, targets, frameConstants->get(), constants, camera, sun,
+                            seconds, 1.0 / 60.0, true};
     }
 
     std::vector<unsigned> arguments() { return fromBytes<unsigned>(readBuffer(device(), context(), clouds->particleArguments()), 8); }
@@ -235,6 +243,68 @@ TEST_F(CloudParticlesTest, ParticlesAreFiniteOverPlacesAndEveryControlsExtremes)
                 }
             }
         }
+}
+
+// Light occlusion (docs/clouds.md, "Light occlusion"): each particle's sun transmittance from
+// the light-space tile lists against the CPU twin's walk over every particle nearer the sun (each
+// crossing marched through the particle's density), with and without the early exit; the early
+// exit changes no transmittance by more than its threshold, 0.01.
+TEST_F(CloudParticlesTest, SunTransmittanceFromTheTileListsMatchesACpuWalk) {
+    CloudSettings dense;
+    dense.rings = 2;
+    dense.ringDimension = 32;
+    dense.particleDistance = 2.0e4f;
+    dense.cloudiness = 0.8f;
+    sun.elevationDegrees = 35.0f;
+    sun.azimuthDegrees = 60.0f;
+    const glm::vec3 position(0.0f, 1500.0f, 0.0f);
+    ParticleTableParameters tableParameters;
+    ParticleTablePrecomputation tables(device(), tableParameters);
+    tables.runAll(context(), *productShaderLibrary);
+    const OpticalDepthTableSize& n = tableParameters.opticalDepth;
+    FrameContext frame = frameAt(position, 0.0);
+    clouds->update(frame, dense, glm::vec4(n.entryZenith, n.entryAzimuth, n.directionZenith, n.directionAzimuth));
+    const unsigned count = particleCount();
+    ASSERT_GT(count, 500u);
+    std::vector<ModelParticle> model;
+    for (const gpu::CloudParticle& p : particles(count))
+        model.push_back({glm::vec3(p.centre), p.centre.w, p.shape.x, p.shape.y, p.shape.z, 0, 0, 0});
+    const glm::dvec3 toSun(sun.direction());
+
+    std::vector<float> transmittance[2];
+    for (int earlyExit = 0; earlyExit < 2; ++earlyExit) {
+        dense.opacityEarlyExit = earlyExit == 1;
+        // The second frame's: the tile pool grows to what the first asked for.
+        ParticleOpacity opacity(device());
+        opacity.compute(frame, *clouds, tables.tables(), dense);
+        const unsigned firstNodes = opacity.readCounts(device(), context()).nodes;
+        opacity.compute(frame, *clouds, tables.tables(), dense);
+        EXPECT_GE(opacity.nodeCapacity(), std::min(firstNodes, static_cast<unsigned>(ParticleOpacity::kMaxPoolBytes / 8)));
+        transmittance[earlyExit] = fromBytes<float>(readBuffer(device(), context(), opacity.sunTransmittanceBuffer()), count);
+        const ParticleOpacity::Counts counts = opacity.readCounts(device(), context());
+        EXPECT_EQ(counts.nodesDropped, 0u);
+        EXPECT_GT(counts.nodes, count);
+        double worst = 0.0, sum = 0.0;
+        int shadowed = 0, beyond = 0;
+        for (unsigned k = 0; k < count; ++k) {
+            const double cpu = sunTransmittance(model, k, toSun, kEarthRadius, tableParameters.method, earlyExit ? kOpacityEarlyExit : 0.0);
+            const double difference = std::abs(transmittance[earlyExit][k] - cpu);
+            if (!(difference < 0.05) && beyond < 5) std::printf("particle %u: GPU %.5f CPU %.5f\n", k, transmittance[earlyExit][k], cpu);
+            worst = std::max(worst, difference);
+            sum += difference;
+            beyond += difference > 0.05;
+            shadowed += cpu < 0.5;
+        }
+        std::printf("early exit %s: %u particles, %d shadowed below 0.5; |GPU - CPU| mean %.4f, worst %.4f, %d beyond 0.05\n", earlyExit ? "on" : "off",
+                    count, shadowed, sum / count, worst, beyond);
+        EXPECT_GT(shadowed, static_cast<int>(count / 10)) << "the test needs shadowed particles";
+        EXPECT_LT(sum / count, 0.005);
+        EXPECT_LE(beyond, static_cast<int>(count / 200));
+    }
+    double change = 0.0;
+    for (unsigned k = 0; k < count; ++k) change = std::max(change, static_cast<double>(std::abs(transmittance[1][k] - transmittance[0][k])));
+    std::printf("the early exit changes a transmittance by at most %.5f\n", change);
+    EXPECT_LE(change, kOpacityEarlyExit);
 }
 
 }  // namespace

@@ -1,0 +1,74 @@
+#pragma once
+// Each cloud particle's sun transmittance through the particles nearer the sun (Yusov 2014,
+// "Computing light occlusion"; docs/clouds.md, "Light occlusion"), on the GPU each frame:
+//  1. tiling: the particles rasterized from the sun into the light-space grid
+//     (clouds/tile_particles.hlsl), each appended to the list of every tile its footprint covers;
+//  2. the lists ordered from the sun, each in place (clouds/order_tiles.hlsl);
+//  3. opacity: a thread per particle (DispatchIndirect) walks the list of its tile from the sun,
+//     to itself or, with the early exit, until its transmittance is below 0.01
+//     (clouds/particle_opacity.hlsl).
+// The shading multiplies the sun's light by the result. The CPU twin is src/clouds/LightSpace.
+#include "clouds/CloudSettings.h"
+#include "clouds/CloudStructures.h"
+#include "gpu/Buffers.h"
+#include "gpu/ConstantBuffer.h"
+#include "gpu/DelayedScalarReadback.h"
+#include "gpu/Texture.h"
+
+#include <d3d11.h>
+
+namespace firmament {
+
+class CloudParticles;
+struct FrameContext;
+struct ParticleTables;
+
+class ParticleOpacity {
+public:
+    explicit ParticleOpacity(ID3D11Device* device);
+
+    // The node pool starts with room for this many tiles per particle of the grid's capacity at a
+    // 512 map (four times as many per doubling), and grows like the fragment lists' (a few frames
+    // after a frame asked for more), up to kMaxPoolBytes.
+    static constexpr unsigned kNodesPerParticle = 16;
+    static constexpr size_t kMaxPoolBytes = size_t{512} << 20;
+
+    // This frame's particles (`particles` updated) tiled from the sun and their transmittance found.
+    void compute(FrameContext& frame, CloudParticles& particles, const ParticleTables& tables, const CloudSettings& settings);
+    // Light occlusion off: every particle's transmittance 1.
+    void clear(ID3D11Device* device, ID3D11DeviceContext* context, unsigned particleCapacity);
+    // The particles' sun transmittance, by slot (StructuredBuffer<float>).
+    ID3D11ShaderResourceView* sunTransmittance() const { return transmittance_.srv.Get(); }
+    ID3D11Buffer* sunTransmittanceBuffer() const { return transmittance_.buffer.Get(); }
+    const gpu::CloudLightSpaceConstants& constants() const { return constants_; }
+    unsigned nodeCapacity() const { return capacity_; }
+    // Whether the last frame computed the transmittance (not cleared it).
+    bool computed() const { return computed_; }
+
+    // The last frame's tile nodes asked for, and those past the pool. Waits for the GPU (tests,
+    // benchmark).
+    struct Counts {
+        unsigned nodes = 0;
+        unsigned nodesDropped = 0;
+    };
+    Counts readCounts(ID3D11Device* device, ID3D11DeviceContext* context) const;
+
+private:
+    void resize(ID3D11Device* device, unsigned particleCapacity, int resolution);
+
+    ConstantBuffer<gpu::CloudLightSpaceConstants> constantsBuffer_;
+    gpu::CloudLightSpaceConstants constants_{};
+    ComPtr<ID3D11BlendState> noColourWrites_;
+    ComPtr<ID3D11RasterizerState> noCulling_;
+    ComPtr<ID3D11SamplerState> linearWrap_;
+    DelayedScalarReadback countsReadback_;
+    int resolution_ = 0, poolResolution_ = 0;
+    bool computed_ = false;
+    unsigned particleCapacity_ = 0, capacity_ = 0;
+    Texture2D heads_;      // R32_UINT, a row more than the map for the counters
+    Texture2D rasterTarget_;  // R8_UNORM, never written: the map's size for the tiling's draw
+    StructuredBuffer nodes_;  // uint3: the particle's slot, the next node, asuint(distance toward the sun)
+    StructuredBuffer transmittance_;  // float per slot
+};
+
+}  // namespace firmament
