@@ -41,7 +41,8 @@ sysroot_ready() { [ "$(cat "$(sysroot_dir)/.firmament-complete" 2>/dev/null)" = 
 
 sysroot_dir() { printf '%s/sysroot-%s' "$FIRMAMENT_CACHE" "$(sysroot_key)"; }
 
-# in_sysroot [--display] CMD...: runs CMD inside the sysroot with the checkout at /src.
+# in_sysroot [--display] CMD...: runs CMD inside the sysroot with the checkout at /src (and the
+# bubblewrap arguments in the array FIRMAMENT_EXTRA_BINDS, when set).
 # --unshare-pid and --die-with-parent end every process started inside (Xvfb, wineserver)
 # together with the command, also on failure or Ctrl-C.
 in_sysroot() {
@@ -62,6 +63,9 @@ in_sysroot() {
         --setenv LANG C.UTF-8
         --unsetenv DISPLAY --unsetenv XAUTHORITY
     )
+    # Host folders and files a command names outside the checkout (tools/demo's path arguments),
+    # bound at their own paths.
+    args+=(${FIRMAMENT_EXTRA_BINDS[@]+"${FIRMAMENT_EXTRA_BINDS[@]}"})
     if [ "$pass_display" = 1 ] && [ -n "${DISPLAY:-}" ]; then
         args+=(--bind /tmp/.X11-unix /tmp/.X11-unix --setenv DISPLAY "$DISPLAY")
         if [ -n "${XAUTHORITY:-}" ] && [ -f "$XAUTHORITY" ]; then
