@@ -230,7 +230,7 @@ int App::run() {
         if (recording_.size() == 0 || timer_.totalSeconds() > recording_.duration() + 0.001)
             recording_.add(timer_.totalSeconds(), state_.camera, state_.sun);  // where the flight ended
         recording_.save(*options_.recordFlight);
-        log::info("flight of " + std::to_string(recording_.size()) + " keyframes written to " + options_.recordFlight->string());
+        log::info(recording_.describe() + " written to " + options_.recordFlight->string());
     }
     printTimings();
     return 0;
