@@ -12,7 +12,7 @@
 #include "clouds/CloudStructures.h"
 #include "gpu/Buffers.h"
 #include "gpu/ConstantBuffer.h"
-#include "gpu/DelayedScalarReadback.h"
+#include "gpu/LinkedLists.h"
 #include "gpu/Texture.h"
 
 #include <d3d11.h>
@@ -41,7 +41,7 @@ public:
     ID3D11ShaderResourceView* sunTransmittance() const { return transmittance_.srv.Get(); }
     ID3D11Buffer* sunTransmittanceBuffer() const { return transmittance_.buffer.Get(); }
     const gpu::CloudLightSpaceConstants& constants() const { return constants_; }
-    unsigned nodeCapacity() const { return capacity_; }
+    unsigned nodeCapacity() const { return tiles_.capacity(); }
     // Whether the last frame computed the transmittance (not cleared it).
     bool computed() const { return computed_; }
 
@@ -61,13 +61,11 @@ private:
     ComPtr<ID3D11BlendState> noColourWrites_;
     ComPtr<ID3D11RasterizerState> noCulling_;
     ComPtr<ID3D11SamplerState> linearWrap_;
-    DelayedScalarReadback countsReadback_;
-    int resolution_ = 0, poolResolution_ = 0;
+    int resolution_ = 0;
     bool computed_ = false;
-    unsigned particleCapacity_ = 0, capacity_ = 0;
-    Texture2D heads_;      // R32_UINT, a row more than the map for the counters
+    unsigned particleCapacity_ = 0;
+    GpuLinkedLists tiles_;    // uint3 nodes: the particle's slot, the next node, asuint(distance toward the sun)
     Texture2D rasterTarget_;  // R8_UNORM, never written: the map's size for the tiling's draw
-    StructuredBuffer nodes_;  // uint3: the particle's slot, the next node, asuint(distance toward the sun)
     StructuredBuffer transmittance_;  // float per slot
 };
 

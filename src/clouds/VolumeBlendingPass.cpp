@@ -1,14 +1,9 @@
 #include "clouds/VolumeBlendingPass.h"
 
-#include "core/Log.h"
 #include "gpu/CommonStates.h"
-#include "gpu/Readback.h"
 #include "gpu/ShaderLibrary.h"
 
 #include <algorithm>
-#include <cstring>
-#include <string>
-#include <vector>
 
 namespace firmament {
 
@@ -30,12 +25,12 @@ BlendingSupport queryBlendingSupport(ID3D11Device* device) {
 }
 
 VolumeBlendingPass::VolumeBlendingPass(ID3D11Device* device)
-    : resolveConstants_(device),
+    : lists_(device, kNodeStride, kMaxPoolBytes, "cloud fragment nodes"),
+      resolveConstants_(device),
       premultiplied_(states::premultipliedAlpha(device)),
       noColourWrites_(states::noColourWrites(device)),
       noCulling_(states::cullNone(device)),
-      noDepth_(states::depthNone(device)),
-      countsReadback_(device, DXGI_FORMAT_R32_UINT, 2) {}
+      noDepth_(states::depthNone(device)) {}
 
 void VolumeBlendingPass::begin(ID3D11Device* device, ID3D11DeviceContext* context, ParticleBlending path, int width, int height) {
     path_ = path;
@@ -44,29 +39,9 @@ void VolumeBlendingPass::begin(ID3D11Device* device, ID3D11DeviceContext* contex
     width_ = width;
     height_ = height;
     if (path == ParticleBlending::PerPixelLists) {
-        if (resized || !heads_.texture) {
-            heads_ = createColorTexture(device, width, height + 1, DXGI_FORMAT_R32_UINT, D3D11_BIND_UNORDERED_ACCESS);
-            capacity_ = static_cast<unsigned>(
-                std::min<size_t>(size_t{static_cast<unsigned>(width)} * static_cast<unsigned>(height) * kNodesPerPixel, kInitialPoolBytes / kNodeStride));
-            nodes_ = createStructuredBuffer(device, capacity_, kNodeStride, nullptr, "cloud fragment nodes");
-            latest_.reset();
-        }
-        if (const auto counts = countsReadback_.pollBits(context)) {
-            latest_ = Overflow{(*counts)[0], (*counts)[0] > capacity_ ? (*counts)[0] - capacity_ : 0u, (*counts)[1]};
-            const size_t maxNodes = kMaxPoolBytes / kNodeStride;
-            if ((*counts)[0] > capacity_ && capacity_ < maxNodes) {
-                capacity_ = static_cast<unsigned>(std::min<size_t>(size_t{(*counts)[0]} * 5 / 4, maxNodes));
-                nodes_ = createStructuredBuffer(device, capacity_, kNodeStride, nullptr, "cloud fragment nodes");
-                log::info("clouds: the fragment pool grows to " + std::to_string(capacity_) + " nodes (" +
-                          std::to_string(size_t{capacity_} * kNodeStride >> 20) + " MiB) after a frame asked for " + std::to_string((*counts)[0]));
-            }
-        }
-        // Every head empty, then the counters' row zero (the row's other texels are never read).
-        const UINT empty[4] = {0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu};
-        context->ClearUnorderedAccessViewUint(heads_.uav.Get(), empty);
-        const UINT zero[2] = {};
-        const D3D11_BOX counters{0, static_cast<UINT>(height), 0, 2, static_cast<UINT>(height) + 1, 1};
-        context->UpdateSubresource(heads_.texture.Get(), 0, &counters, zero, sizeof(zero), sizeof(zero));
+        const size_t room = size_t{static_cast<unsigned>(width)} * static_cast<unsigned>(height) * kNodesPerPixel;
+        lists_.resize(device, width, height, static_cast<unsigned>(std::min<size_t>(room, kInitialPoolBytes / kNodeStride)));
+        lists_.clear(device, context);
     } else {
         if (resized || !storedColour_.texture) {
             const UINT bind = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS;
@@ -82,7 +57,7 @@ void VolumeBlendingPass::begin(ID3D11Device* device, ID3D11DeviceContext* contex
 void VolumeBlendingPass::bindForParticles(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, ID3D11BlendState* blend) const {
     if (path_ == ParticleBlending::PerPixelLists) {
         // The lists' pixel shader writes no colour; the target stays bound, unwritten.
-        ID3D11UnorderedAccessView* views[] = {heads_.uav.Get(), nodes_.uav.Get()};
+        ID3D11UnorderedAccessView* views[] = {lists_.heads().uav.Get(), lists_.nodes().uav.Get()};
         context->OMSetRenderTargetsAndUnorderedAccessViews(1, &target, nullptr, 1, 2, views, nullptr);
         context->OMSetBlendState(noColourWrites_.Get(), nullptr, 0xffffffffu);
         return;
@@ -97,7 +72,7 @@ void VolumeBlendingPass::bindForParticles(ID3D11DeviceContext* context, ID3D11Re
 }
 
 void VolumeBlendingPass::bindListsForCompute(ID3D11DeviceContext* context) const {
-    ID3D11UnorderedAccessView* views[] = {heads_.uav.Get(), nodes_.uav.Get()};
+    ID3D11UnorderedAccessView* views[] = {lists_.heads().uav.Get(), lists_.nodes().uav.Get()};
     context->CSSetUnorderedAccessViews(1, 2, views, nullptr);
 }
 
@@ -112,9 +87,9 @@ void VolumeBlendingPass::resolve(ID3D11DeviceContext* context, ShaderLibrary& sh
     context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
     context->VSSetShader(shaders.vertexShader(kResolveVertexShader), nullptr, 0);
     if (path_ == ParticleBlending::PerPixelLists) {
-        ID3D11UnorderedAccessView* views[] = {heads_.uav.Get()};
+        ID3D11UnorderedAccessView* views[] = {lists_.heads().uav.Get()};
         context->OMSetRenderTargetsAndUnorderedAccessViews(1, &target, nullptr, 1, 1, views, nullptr);
-        context->PSSetShaderResources(0, 1, nodes_.srv.GetAddressOf());
+        context->PSSetShaderResources(0, 1, lists_.nodes().srv.GetAddressOf());
         resolveConstants_.update(context, glm::uvec4(static_cast<unsigned>(height_), 0u, 0u, 0u));
         ID3D11Buffer* constants[] = {resolveConstants_.get()};
         context->PSSetConstantBuffers(0, 1, constants);
@@ -122,7 +97,7 @@ void VolumeBlendingPass::resolve(ID3D11DeviceContext* context, ShaderLibrary& sh
         context->Draw(3, 0);
         ID3D11ShaderResourceView* none[1] = {};
         context->PSSetShaderResources(0, 1, none);
-        countsReadback_.copy(context, heads_.texture.Get(), 0, static_cast<unsigned>(height_));
+        lists_.copyCounts(context);
     } else {
         ID3D11UnorderedAccessView* views[] = {storedColour_.uav.Get(), storedExtent_.uav.Get()};
         context->OMSetRenderTargetsAndUnorderedAccessViews(1, &target, nullptr, 1, 2, views, nullptr);
@@ -134,15 +109,15 @@ void VolumeBlendingPass::resolve(ID3D11DeviceContext* context, ShaderLibrary& sh
 }
 
 VolumeBlendingPass::Overflow VolumeBlendingPass::readOverflow(ID3D11Device* device, ID3D11DeviceContext* context) const {
-    Overflow o;
-    if (path_ != ParticleBlending::PerPixelLists) return o;
-    const ReadbackImage heads = readTexture2D(device, context, heads_.texture.Get());
-    unsigned counters[2] = {};
-    std::memcpy(counters, heads.bytes.data() + static_cast<size_t>(height_) * static_cast<size_t>(width_) * 4u, sizeof(counters));
-    o.nodesAskedFor = counters[0];
-    o.nodesDropped = counters[0] > capacity_ ? counters[0] - capacity_ : 0;
-    o.fragmentsDropped = counters[1];
-    return o;
+    if (path_ != ParticleBlending::PerPixelLists) return {};
+    const GpuLinkedLists::Counts c = lists_.read(device, context);
+    return {c.asked, c.dropped, c.second};
+}
+
+std::optional<VolumeBlendingPass::Overflow> VolumeBlendingPass::latestOverflow() const {
+    const std::optional<GpuLinkedLists::Counts> c = lists_.latest();
+    if (!c) return std::nullopt;
+    return Overflow{c->asked, c->dropped, c->second};
 }
 
 }  // namespace firmament

@@ -11,7 +11,7 @@
 #include "clouds/ParticleBlending.h"
 #include "gpu/Buffers.h"
 #include "gpu/ConstantBuffer.h"
-#include "gpu/DelayedScalarReadback.h"
+#include "gpu/LinkedLists.h"
 #include "gpu/Texture.h"
 
 #include <d3d11.h>
@@ -51,7 +51,7 @@ public:
     void resolve(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11RenderTargetView* target, ID3D11BlendState* blend = nullptr);
 
     ParticleBlending path() const { return path_; }
-    unsigned nodeCapacity() const { return capacity_; }
+    unsigned nodeCapacity() const { return path_ == ParticleBlending::PerPixelLists ? lists_.capacity() : 0u; }
 
     // What did not fit: nodes asked of the pool past its capacity, fragments past one pixel's
     // resolve limit (kMaxPixelFragments in fragment_lists.hlsli).
@@ -63,15 +63,13 @@ public:
     // Waits for the GPU (tests, benchmark).
     Overflow readOverflow(ID3D11Device* device, ID3D11DeviceContext* context) const;
     // A few frames late, never waiting (the GUI); nothing before the first copy has finished.
-    std::optional<Overflow> latestOverflow() const { return latest_; }
+    std::optional<Overflow> latestOverflow() const;
 
 private:
 
     ParticleBlending path_ = ParticleBlending::Alpha;
     int width_ = 0, height_ = 0;
-    unsigned capacity_ = 0;
-    Texture2D heads_;             // lists: R32_UINT, a row more than the target for the counters
-    StructuredBuffer nodes_;      // lists: FragmentNode
+    GpuLinkedLists lists_;        // FragmentNode; the second counter: fragments past a pixel's limit
     ConstantBuffer<glm::uvec4> resolveConstants_;  // x: the counters' row
     Texture2D storedColour_;      // ordered: RGBA32F colour, extinction
     Texture2D storedExtent_;      // ordered: RG32F front, back (back <= front: none stored)
@@ -79,8 +77,6 @@ private:
     ComPtr<ID3D11BlendState> noColourWrites_;
     ComPtr<ID3D11RasterizerState> noCulling_;
     ComPtr<ID3D11DepthStencilState> noDepth_;
-    DelayedScalarReadback countsReadback_;  // the lists' two counters
-    std::optional<Overflow> latest_;
 };
 
 }  // namespace firmament
