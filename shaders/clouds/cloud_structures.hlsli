@@ -50,6 +50,14 @@ struct CloudLightSpaceConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(CloudLightSpaceConstants);
 
+// "Shafts from clouds: shadow map" (clouds/merge_cloud_shadows.hlsl): one shadow cascade, into
+// which the clouds' light-space map is drawn as casters.
+struct CloudShadowMergeConstants {
+    float4x4 clipToWorld;  // the cascade's clip space (x, y in -1..1, depth 0..1) to the world
+    float4x4 worldToClip;  // the cascade's orthographic view-projection
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudShadowMergeConstants);
+
 // The clouds' low-resolution passes (clouds/downsample_depth.hlsl, upsample_clouds.hlsl).
 struct CloudUpsampleConstants {
     uint4 sizes;  // x: the downscale factor; y, z: the low-resolution target's width and height; w: unused

@@ -13,6 +13,7 @@ cbuffer FrameBuffer : register(b0) { FrameConstants frame; };
 cbuffer AtmosphereBuffer : register(b1) { AtmosphereConstants atmosphere; };
 cbuffer LightShaftBuffer : register(b2) { LightShaftConstants lightShafts; };
 cbuffer ShadowBuffer : register(b3) { ShadowConstants shadows; };
+cbuffer CloudShadowBuffer : register(b4) { CloudShadowConstants cloudShadow; };
 
 Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before this pass
 Texture2D<float> sceneDepth : register(t1);
@@ -21,9 +22,11 @@ Texture3D<float4> singleScatteringLut : register(t3);
 Texture3D<float4> highOrderScatteringLut : register(t4);
 Texture3D<float4> multipleScatteringLut : register(t5);
 Texture2D<float> shadowMap : register(t6);
+Texture2DArray<float4> cloudShadowMap : register(t7);  // the clouds' transparency maps (shadows/cloud_shadow.hlsli)
 SamplerState linearClamp : register(s0);
 SamplerComparisonState shadowComparison : register(s1);
 
+#define FIRMAMENT_CLOUD_SHADOWS
 #include "lightshafts/ray_march.hlsli"
 
 // Only where the sun reaches, times the scattering scale.

@@ -12,6 +12,7 @@ cbuffer AtmosphereBuffer : register(b1) { AtmosphereConstants atmosphere; };
 cbuffer LightShaftBuffer : register(b2) { LightShaftConstants lightShafts; };
 cbuffer ShadowBuffer : register(b3) { ShadowConstants shadows; };
 cbuffer EpipolarBuffer : register(b4) { EpipolarConstants epipolar; };
+cbuffer CloudShadowBuffer : register(b6) { CloudShadowConstants cloudShadow; };  // b5: march_cascades.hlsl's
 
 Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before the light shafts
 Texture2D<float> sceneDepth : register(t1);      // reversed Z, 0 where nothing was drawn
@@ -39,6 +40,8 @@ struct CascadePartial {
     float4 scattering;
 };
 StructuredBuffer<CascadePartial> cascadeParts : register(t19);
+Texture2DArray<float4> cloudShadowMap : register(t20); // the clouds' transparency maps (shadows/cloud_shadow.hlsli)
+#define FIRMAMENT_CLOUD_SHADOWS
 SamplerState linearClamp : register(s0);
 SamplerComparisonState shadowComparison : register(s1);
 

@@ -17,17 +17,44 @@
 // epipolar samples), the steps a tree proves uniformly lit or shadowed are taken a node at a time
 // without sampling the map (lightshafts/minmax_trees.hlsli); the result is the same.
 //
+// With FIRMAMENT_CLOUD_SHADOWS ("Shafts from clouds: transparency map", Yusov 2014), each step's
+// visibility is multiplied by the clouds' transmittance at the step's middle
+// (shadows/cloud_shadow.hlsli): the steps a tree proves lit are then taken one at a time for it,
+// so the epipolar march and the brute force still agree.
+//
 // The includer declares: cbuffers `atmosphere` (AtmosphereConstants), `lightShafts`
 // (LightShaftConstants) and `shadows` (ShadowConstants); Texture2D<float4> netDensityLut;
 // Texture3D<float4> singleScatteringLut, highOrderScatteringLut, multipleScatteringLut;
 // Texture2D<float> shadowMap; SamplerState linearClamp; SamplerComparisonState shadowComparison;
-// with the trees, what minmax_trees.hlsli needs.
+// with the trees, what minmax_trees.hlsli needs; with the clouds, the cbuffer `cloudShadow`
+// (CloudShadowConstants) and Texture2D<float4> cloudShadowMap.
 #include "atmosphere/yusov/view_ray.hlsli"
 #include "lightshafts/lightshaft_structures.hlsli"
 #include "shadows/cascade_sampling.hlsli"
 #ifdef FIRMAMENT_MINMAX_TREES
 #include "lightshafts/minmax_trees.hlsli"
 #endif
+#ifdef FIRMAMENT_CLOUD_SHADOWS
+#include "shadows/cloud_shadow.hlsli"
+#endif
+
+// Whether the clouds shadow the march this frame.
+bool cloudShadowsOn() {
+#ifdef FIRMAMENT_CLOUD_SHADOWS
+    return cloudShadow.up.w != 0.0;
+#else
+    return false;
+#endif
+}
+
+// The share of the sun's light the clouds let reach `position` (1 without them).
+float cloudTransmittanceAt(float3 position) {
+#ifdef FIRMAMENT_CLOUD_SHADOWS
+    return cloudTransmittance(position);
+#else
+    return 1.0;
+#endif
+}
 
 // What the march through the cascades found.
 struct ShadowMarch {
@@ -96,6 +123,8 @@ CascadeMarch marchCascade(ViewRay ray, float3 sunDir, bool integrate, uint slice
 #ifdef FIRMAMENT_MINMAX_TREES
     TreeWalk walk = beginTreeWalk(c, slice, uvz0, uvz1, steps);
 #endif
+    bool clouds = cloudShadowsOn();
+    bool perStep = integrate || clouds;
     [loop] for (uint i = 0; i < steps;) {
         // The visibility of step i, and of the steps after it that share it (`run` in all).
         uint run = 1;
@@ -104,20 +133,28 @@ CascadeMarch marchCascade(ViewRay ray, float3 sunDir, bool integrate, uint slice
         visibility = walkTree(walk, i, steps, run);
 #endif
         if (visibility < 0.0) visibility = cascadeVisibility(c, lerp(uvz0, uvz1, (i + 0.5) / steps));
-        if (cm.firstLit < 0.0 && visibility > 0.0) cm.firstLit = s0 + i * ds;
-        cm.litLength += visibility * ds * run;
-        if (integrate) {
+        if (!perStep) {
+            if (cm.firstLit < 0.0 && visibility > 0.0) cm.firstLit = s0 + i * ds;
+            cm.litLength += visibility * ds * run;
+        } else {
+            // Each step of the run on its own: its clouds, and with Integration its scattering.
             [loop] for (uint j = i; j < i + run; ++j) {
                 float t = (j + 0.5) / steps;
                 float3 position = ray.start + ray.viewDir * (s0 + t * (s1 - s0));
-                float radius = length(position);
-                float h = radius - atmosphere.earth.x;
-                float3 density = particleDensity(atmosphere, h);
-                netDensity += density * (0.5 * ds);
-                cm.singleScattering += scatteringCoefficient(atmosphere, density, cosTheta) * exp(-opticalDepth(atmosphere, netDensity)) *
-                                       sunTransmittance(atmosphere, netDensityLut, linearClamp, h, dot(position / radius, sunDir)) *
-                                       (visibility * ds);
-                netDensity += density * (0.5 * ds);
+                float lit = visibility;
+                if (clouds && lit > 0.0) lit *= cloudTransmittanceAt(ray.camera + ray.viewDir * (ray.offset + s0 + t * (s1 - s0)));
+                if (cm.firstLit < 0.0 && lit > 0.0) cm.firstLit = s0 + j * ds;
+                cm.litLength += lit * ds;
+                if (integrate) {
+                    float radius = length(position);
+                    float h = radius - atmosphere.earth.x;
+                    float3 density = particleDensity(atmosphere, h);
+                    netDensity += density * (0.5 * ds);
+                    cm.singleScattering += scatteringCoefficient(atmosphere, density, cosTheta) * exp(-opticalDepth(atmosphere, netDensity)) *
+                                           sunTransmittance(atmosphere, netDensityLut, linearClamp, h, dot(position / radius, sunDir)) *
+                                           (lit * ds);
+                    netDensity += density * (0.5 * ds);
+                }
             }
         }
         i += run;

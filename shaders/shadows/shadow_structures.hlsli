@@ -27,4 +27,18 @@ struct ShadowCasterConstants {
 };
 FIRMAMENT_CONSTANT_BUFFER(ShadowCasterConstants);
 
+// shadows/cloud_shadow.hlsli: the clouds' light-space transparency maps (src/clouds/CloudShadowMap.h),
+// orthographic views from the sun over the camera: a near map of fine texels and a far one over
+// the whole particle field, two slices of one texture array. Each texel holds, for the sun's ray
+// through it, the clouds' transmittance and the stretch of the ray they occupy, as distances
+// toward the sun from its map's centre.
+struct CloudShadowConstants {
+    float4 centre;     // xyz: the near map's centre (world, m); w: its half-width (m)
+    float4 right;      // xyz: the maps' x axis (unit, across the sun); w: texels along a side
+    float4 up;         // xyz: their y axis (unit, across the sun); w: 1 when the maps hold this frame's clouds, 0 for none
+    float4 sun;        // xyz: the direction to the sun (unit); w: the width of each map's fade at its edge (share of its half-width)
+    float4 farCentre;  // xyz: the far map's centre; w: its half-width (m)
+};
+FIRMAMENT_CONSTANT_BUFFER(CloudShadowConstants);
+
 #endif

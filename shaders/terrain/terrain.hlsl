@@ -5,7 +5,8 @@
 // coarser level takes the finer one's edge vertices into its own triangles: the two meet
 // without cracks or T-junctions. The pixel shader shades with the height field's slopes and the detail
 // noise's, a material by slope and altitude, the sun attenuated by the atmosphere and shadowed by
-// the cascades, and the ambient sky light (Yusov 2013, "Terrain shaders").
+// the cascades and by the clouds' shadow map (Yusov 2014), and the ambient sky light (Yusov 2013,
+// "Terrain shaders").
 //   vs_main + ps_main: the HDR frame, with depth; GROUND_LIGHTING selects the tables (0 none,
 //   1 Yusov's, 2 Bruneton's).
 //   vs_depth: depth only, for the shadow cascades.
@@ -22,12 +23,14 @@ cbuffer BrunetonBuffer : register(b2) { BrunetonConstants bruneton; };
 cbuffer TerrainBuffer : register(b3) { TerrainConstants terrain; };
 cbuffer ShadowBuffer : register(b4) { ShadowConstants shadows; };
 cbuffer ShadowCasterBuffer : register(b5) { ShadowCasterConstants caster; };
+cbuffer CloudShadowBuffer : register(b6) { CloudShadowConstants cloudShadow; };
 
 Texture2D<float> heightField : register(t0);
 Texture2D<float2> slopeField : register(t1);  // (dh/dx, dh/dz), mip-mapped
 Texture2D<float4> sunTransmittanceTable : register(t2);
 Texture2D<float4> skyIrradianceTable : register(t3);
 Texture2D<float> shadowMap : register(t4);
+Texture2DArray<float4> cloudShadowMap : register(t5);
 SamplerState linearClamp : register(s0);
 SamplerState linearWrap : register(s1);
 SamplerComparisonState shadowComparison : register(s2);
@@ -35,6 +38,7 @@ SamplerComparisonState shadowComparison : register(s2);
 #include "terrain/ground_lighting.hlsli"
 #include "terrain/material.hlsli"
 #include "shadows/cascade_sampling.hlsli"
+#include "shadows/cloud_shadow.hlsli"
 
 // The world position of vertex `id` of the current level: a grid vertex, or a midpoint of the
 // hole's edge (src/terrain/ClipmapMesh.h).
@@ -138,14 +142,16 @@ float4 ps_main(TerrainVertex input) : SV_Target {
     int cascade = -1;
     float visibility = shadows.mode.x > 0 ? sunVisibility(world, normal, viewDepth, cascade) : 1.0;
     if (shadows.mode.w != 0) albedo *= cascadeTint(cascade);
+    float clouds = cloudTransmittance(world);
 
     switch (terrain.grid.z) {
         case 1: return float4(albedo, 1.0);
         case 2: return float4(normal * 0.5 + 0.5, 1.0);
         case 3: return float4(cascadeTint((int)terrain.grid.y % 8), 1.0);
+        case 4: return float4(clouds, clouds, clouds, 1.0);
         default: break;
     }
     GroundLight light = groundLight(altitude, dot(up, toSun));
-    float3 radiance = lambertianRadiance(albedo, normal, up, toSun, visibility, light) * frame.sunIrradiance.rgb;
+    float3 radiance = lambertianRadiance(albedo, normal, up, toSun, visibility * clouds, light) * frame.sunIrradiance.rgb;
     return float4(radiance, 1.0);
 }

@@ -27,6 +27,11 @@ inline constexpr std::array<std::string_view, 3> kCloudDownscaleNames{"1x", "2x"
 // "Light-space map resolution": tiles along a side of the grid seen from the sun.
 inline constexpr std::array<std::string_view, 4> kLightSpaceResolutionNames{"256", "512", "1024", "2048"};
 inline constexpr std::array<std::string_view, 3> kBlendingPathNames{"Auto", "Rasterizer-ordered views", "Per-pixel lists"};
+// "Shafts from clouds": how the light shafts see the clouds (Yusov 2014's sample): not at all; as
+// casters drawn into the shadow cascades where they let through less than half of the light; or
+// through their light-space transparency map, sampled at every step of the march.
+enum class ShaftsFromClouds { None, ShadowMap, TransparencyMap };
+inline constexpr std::array<std::string_view, 3> kShaftsFromCloudsNames{"None", "Shadow map", "Transparency map"};
 
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with
@@ -48,6 +53,12 @@ struct CloudSettings {
     // "Opacity early exit": a particle's walk toward the sun stops once its transmittance is
     // below 0.01 (Yusov 2014); off, it goes on to the particle itself.
     bool opacityEarlyExit = true;
+    // "Cloud shadows": the clouds' light-space transparency map drawn each frame, shadowing the
+    // terrain and, by Shafts from clouds, the light shafts; off, the clouds cast no shadow.
+    bool shadows = true;
+    // "Shafts from clouds": the clouds' shadows in the light shafts. The terrain is shadowed by
+    // the transparency map in every mode.
+    ShaftsFromClouds shaftsFromClouds = ShaftsFromClouds::TransparencyMap;
     // "Show particles": each particle drawn over the scene as its bounding ellipsoid lit by the
     // sun, or white with the transparency of its optical depth (docs/clouds.md).
     ParticleView showParticles = ParticleView::Off;
@@ -69,6 +80,8 @@ struct CloudSettings {
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable clouds");
         v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
+        v.field("shadows", shadows, "Cloud shadows");
+        v.choice("shaftsFromClouds", shaftsFromClouds, kShaftsFromCloudsNames, "Shafts from clouds");
         v.field("volumetricBlending", volumetricBlending, "Volumetric blending");
         v.choice("blendingPath", blendingPath, kBlendingPathNames, "Blending path");
         int downscaleIndex = downscale >= 4 ? 2 : downscale >= 2 ? 1 : 0;

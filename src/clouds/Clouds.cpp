@@ -37,7 +37,8 @@ Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
       blendingSupport_(queryBlendingSupport(device)),
       blending_(device),
       lowResolution_(device),
-      opacity_(device) {
+      opacity_(device),
+      shadowMap_(device) {
     log::info(std::string("clouds: the device ") + (blendingSupport_.rasterizerOrderedViews ? "supports" : "has no") +
               " rasterizer-ordered views; Blending path Auto: " +
               std::string(describeParticleBlending(chooseParticleBlending(true, BlendingPath::Auto, blendingSupport_))));
@@ -108,20 +109,31 @@ std::optional<double> Clouds::tableProgress() const {
     return std::nullopt;
 }
 
-void Clouds::renderGeometry(FrameContext& frame, const CloudSettings& settings) {
-    if (settings.showParticles == ParticleView::Off && !settings.enabled) return;
+void Clouds::update(FrameContext& frame, const CloudSettings& settings) {
+    if (settings.showParticles == ParticleView::Off && !settings.enabled) {
+        shadowMap_.clear(frame.context);
+        return;
+    }
     const OpticalDepthTableSize& n = tableParameters(settings).opticalDepth;
     particles_.update(frame, settings,
                       glm::vec4(static_cast<float>(n.entryZenith), static_cast<float>(n.entryAzimuth), static_cast<float>(n.directionZenith),
                                 static_cast<float>(n.directionAzimuth)));
-    if (settings.showParticles == ParticleView::BoundingShapes) particles_.drawBoundingShapes(frame);
-    else updateTables(frame, settings, frame.finishWorkNow);
-    if (settings.enabled && settings.showParticles == ParticleView::Off) {
+    if (settings.showParticles != ParticleView::BoundingShapes) updateTables(frame, settings, frame.finishWorkNow);
+    const ParticleTablePrecomputation* tables = tables_.current();
+    if (settings.enabled && settings.showParticles == ParticleView::Off && tables) {
         scatteringTable(frame.device);
-        const ParticleTablePrecomputation* tables = tables_.current();
-        if (tables && settings.lightOcclusion) opacity_.compute(frame, particles_, tables->tables(), settings);
+        if (settings.lightOcclusion) opacity_.compute(frame, particles_, tables->tables(), settings);
         else opacity_.clear(frame.device, frame.context, particles_.capacity());
+        if (settings.shadows) shadowMap_.render(frame, particles_, tables->tables(), settings);
+        else shadowMap_.clear(frame.context);
+    } else {
+        if (settings.enabled && settings.showParticles == ParticleView::Off) opacity_.clear(frame.device, frame.context, particles_.capacity());
+        shadowMap_.clear(frame.context);
     }
+}
+
+void Clouds::renderGeometry(FrameContext& frame, const CloudSettings& settings) {
+    if (settings.showParticles == ParticleView::BoundingShapes) particles_.drawBoundingShapes(frame);
 }
 
 // Show particles replaces the shaded clouds with its view of them.

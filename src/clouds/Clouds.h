@@ -8,6 +8,7 @@
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
 #include "clouds/LowResolution.h"
+#include "clouds/CloudShadowMap.h"
 #include "clouds/ParticleOpacity.h"
 #include "clouds/VolumeBlendingPass.h"
 #include "tables/CachedTables.h"
@@ -17,16 +18,26 @@
 
 namespace firmament {
 
+class CascadedShadowMaps;
 struct FrameContext;
 
 class Clouds {
 public:
     Clouds(ID3D11Device* device, const TableStorage& storage);
 
-    // After the terrain: this frame's particles and tables, and the views drawn as geometry (the
-    // bounding shapes, which then take the aerial perspective like the terrain). Nothing when
-    // Show particles is off.
+    // Before the terrain: this frame's particles and tables, each particle's light occlusion, and
+    // the clouds' shadow map (shadows() and mergeShadowsInto(), read by the terrain and the light
+    // shafts). Nothing with the clouds off and Show particles off.
+    void update(FrameContext& frame, const CloudSettings& settings);
+    // After the terrain: the views drawn as geometry (the bounding shapes, which then take the
+    // aerial perspective like the terrain). Nothing when Show particles is off.
     void renderGeometry(FrameContext& frame, const CloudSettings& settings);
+    // The clouds' shadow map, applied by its readers when this frame's clouds drew it (shaded
+    // clouds, whatever the atmosphere: the particles cast shadows even where they are not lit).
+    CloudShadowInputs shadows() const { return shadowMap_.inputs(); }
+    const CloudShadowMap& shadowMap() const { return shadowMap_; }
+    // "Shafts from clouds: shadow map": the clouds drawn into the shadow cascades as casters.
+    void mergeShadowsInto(FrameContext& frame, CascadedShadowMaps& cascades) { shadowMap_.mergeInto(frame, cascades); }
     // The atmosphere model the clouds are lit through: Yusov 2013's tables or Bruneton's (one of
     // them, the model drawn alone; none in a comparison of the two).
     struct AtmosphereTables {
@@ -78,6 +89,7 @@ private:
     VolumeBlendingPass blending_;
     CloudLowResolution lowResolution_;
     ParticleOpacity opacity_;
+    CloudShadowMap shadowMap_;
 };
 
 }  // namespace firmament

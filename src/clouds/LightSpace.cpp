@@ -9,10 +9,15 @@
 
 namespace firmament {
 
-gpu::CloudLightSpaceConstants lightSpaceConstants(const CloudSettings& settings, glm::dvec3 camera, glm::dvec3 toSun, unsigned nodeCapacity) {
+SunFrame sunFrame(glm::dvec3 toSun) {
     const glm::dvec3 sun = glm::normalize(toSun);
     const glm::dvec3 reference = std::abs(sun.y) < 0.99 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
-    const glm::dvec3 right = glm::normalize(glm::cross(reference, sun)), up = glm::cross(sun, right);
+    const glm::dvec3 right = glm::normalize(glm::cross(reference, sun));
+    return {right, glm::cross(sun, right), sun};
+}
+
+gpu::CloudLightSpaceConstants lightSpaceConstants(const CloudSettings& settings, glm::dvec3 camera, glm::dvec3 toSun, unsigned nodeCapacity) {
+    const auto [right, up, sun] = sunFrame(toSun);
     // The grid's corners are sqrt(2) particle distances away; the layer's height adds its shadow's length.
     const double halfWidth = settings.particleDistance * std::sqrt(2.0) + settings.altitude + settings.thickness;
     gpu::CloudLightSpaceConstants c{};

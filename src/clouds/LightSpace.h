@@ -18,6 +18,12 @@ inline constexpr double kCloudExtinction = 0.07;
 // With "Opacity early exit", a particle's walk stops once its transmittance is below this (Yusov 2014).
 inline constexpr double kOpacityEarlyExit = 0.01;
 
+// Axes of a map seen from the sun: right and up across its rays, and the direction to it (unit).
+struct SunFrame {
+    glm::dvec3 right, up, sun;
+};
+SunFrame sunFrame(glm::dvec3 toSun);
+
 // The map for a camera at `camera` and the sun along `toSun` (unit): centred over the camera at
 // the layer's altitude, wide enough for the whole grid at any sun, `resolution` tiles a side.
 gpu::CloudLightSpaceConstants lightSpaceConstants(const CloudSettings& settings, glm::dvec3 camera, glm::dvec3 toSun, unsigned nodeCapacity);

@@ -57,6 +57,22 @@ ComPtr<ID3D11BlendState> noColourWrites(ID3D11Device* device) {
     return state;
 }
 
+ComPtr<ID3D11BlendState> minimumColourProductAlpha(ID3D11Device* device) {
+    D3D11_BLEND_DESC desc{};
+    D3D11_RENDER_TARGET_BLEND_DESC& target = desc.RenderTarget[0];
+    target.BlendEnable = TRUE;
+    target.SrcBlend = D3D11_BLEND_ONE;
+    target.DestBlend = D3D11_BLEND_ONE;
+    target.BlendOp = D3D11_BLEND_OP_MIN;
+    target.SrcBlendAlpha = D3D11_BLEND_ZERO;
+    target.DestBlendAlpha = D3D11_BLEND_SRC_ALPHA;
+    target.BlendOpAlpha = D3D11_BLEND_OP_ADD;
+    target.RenderTargetWriteMask = D3D11_COLOR_WRITE_ENABLE_ALL;
+    ComPtr<ID3D11BlendState> state;
+    check(device->CreateBlendState(&desc, &state), "CreateBlendState (minimum colour, product alpha)");
+    return state;
+}
+
 // Premultiplied colour (src + (1 - src.a) dst), the target's alpha scaled by `destinationAlpha`.
 ComPtr<ID3D11BlendState> premultipliedColour(ID3D11Device* device, D3D11_BLEND destinationAlpha, const char* what) {
     D3D11_BLEND_DESC desc{};

@@ -35,6 +35,10 @@ ComPtr<ID3D11BlendState> premultipliedAlphaTransmittance(ID3D11Device* device);
 // Writes no colour: for pixel shaders that only write views, with the target bound so that the
 // pass has the target's size (Wine otherwise draws into whichever framebuffer it last had bound).
 ComPtr<ID3D11BlendState> noColourWrites(ID3D11Device* device);
+// The smallest colour kept (dst.rgb = min(src.rgb, dst.rgb)), the alpha multiplied
+// (dst.a = src.a dst.a): layers drawn in any order keep their nearest extents and the product of
+// their transmittances.
+ComPtr<ID3D11BlendState> minimumColourProductAlpha(ID3D11Device* device);
 
 // Depth-stencil states. Firmament's depth is reversed (1 at the near plane, 0 at the far one,
 // cleared to 0; src/core/Camera.h), so "nearer or equal" is GREATER_EQUAL.

@@ -32,7 +32,7 @@ const ShaderKey kDotsVertexShader{"lightshafts/show_sampling.hlsl", "vs_main", "
 const ShaderKey kDotsPixelShader{"lightshafts/show_sampling.hlsl", "ps_main", "ps_5_0", {}};
 }  // namespace
 
-EpipolarSampling::EpipolarSampling(ID3D11Device* device) : constants_(device), cascadePass_(device), states_(device) {}
+EpipolarSampling::EpipolarSampling(ID3D11Device* device) : constants_(device), cascadePass_(device), noClouds_(device), states_(device) {}
 
 glm::vec2 EpipolarSampling::epipole(const glm::mat4& viewProjection, glm::vec3 directionToSun, bool& behind) {
     const glm::vec4 clip = viewProjection * glm::vec4(directionToSun, 0.0f);
@@ -137,23 +137,30 @@ void EpipolarSampling::prepareArguments(FrameContext& frame, const WorkList& lis
 }
 
 void EpipolarSampling::render(FrameContext& frame, const LightShaftSettings& settings, const ScatteringLookup& lookup, const ShadowInputs& shadows,
-                              ID3D11Buffer* lightShaftConstants, ID3D11Buffer* shadowConstants) {
+                              ID3D11Buffer* lightShaftConstants, ID3D11Buffer* shadowConstants, const CloudShadowInputs& cloudInputs) {
     ID3D11DeviceContext* context = frame.context;
     const int slices = settings.slices, samples = settings.samplesPerSlice;
     const unsigned width = static_cast<unsigned>(frame.width()), height = static_cast<unsigned>(frame.height());
     resize(frame.device, slices, samples, frame.width(), frame.height());
     const gpu::EpipolarConstants c = constants(settings, frame.constants, frame.camera.forward(), shadows);
+    CloudShadowInputs clouds = cloudInputs;
+    if (!clouds.constants || !clouds.map) {
+        noClouds_.update(context, gpu::CloudShadowConstants{});
+        clouds = {noClouds_.get(), nullptr};
+    }
     const bool trees = c.trees.x != 0;
     constants_.update(context, c);
 
     ID3D11ShaderResourceView* scene = frame.targets.copyHdr(context).srv.Get();
     inputs_ = {scene, frame.targets.depth().srv.Get(), lookup.netDensity, lookup.singleScattering, lookup.highOrderScattering,
                lookup.multipleScattering, shadows.map, cameraDepth_.srv.Get(), sliceEnds_.srv.Get(), samples_.srv.Get(), coarse_.srv.Get(),
-               extinction_.srv.Get(), sources_.srv.Get(), marched_.srv.Get(), interpolated_.srv.Get(), nullptr, nullptr, nullptr, nullptr, nullptr};
-    ID3D11Buffer* buffers[] = {frame.frameConstants, lookup.atmosphere, lightShaftConstants, shadowConstants, constants_.get(), cascadePass_.get()};
+               extinction_.srv.Get(), sources_.srv.Get(), marched_.srv.Get(), interpolated_.srv.Get(), nullptr, nullptr, nullptr, nullptr, nullptr,
+               clouds.map};
+    ID3D11Buffer* buffers[] = {frame.frameConstants, lookup.atmosphere, lightShaftConstants, shadowConstants, constants_.get(), cascadePass_.get(),
+                               clouds.constants};
     std::copy(std::begin(buffers), std::end(buffers), constantBuffers_);
     ID3D11SamplerState* samplers[] = {lookup.linearClamp, shadows.comparison};
-    context->CSSetConstantBuffers(0, 6, constantBuffers_);
+    context->CSSetConstantBuffers(0, 7, constantBuffers_);
     // The cascades the march goes through, and how.
     const int marchedCascades = shadows.map ? std::max(shadows.cascades - settings.firstCascade, 0) : 0;
     const CascadeProcessing cascadeMode = marchedCascades > 0 ? settings.effectiveCascadeProcessing(marchedCascades) : CascadeProcessing::SinglePass;
@@ -253,7 +260,7 @@ void EpipolarSampling::march(FrameContext& frame, CascadeProcessing mode, int ma
 void EpipolarSampling::showSampling(FrameContext& frame, int slices, int samples) {
     ID3D11DeviceContext* context = frame.context;
     states_.bindTarget(context, frame.targets.hdr().rtv.Get(), frame.width(), frame.height());
-    context->VSSetConstantBuffers(0, 6, constantBuffers_);
+    context->VSSetConstantBuffers(0, 7, constantBuffers_);
     context->VSSetShaderResources(0, InputCount, inputs_.data());
     context->VSSetShader(frame.shaders.vertexShader(kDotsVertexShader), nullptr, 0);
     context->PSSetShader(frame.shaders.pixelShader(kDotsPixelShader), nullptr, 0);

@@ -19,7 +19,9 @@
 #include "lightshafts/LightShaftSettings.h"
 #include "lightshafts/LightShaftStructures.h"
 #include "render/FrameContext.h"
+#include "shadows/CloudShadowInputs.h"
 #include "shadows/ShadowInputs.h"
+#include "shadows/ShadowStructures.h"
 
 #include <array>
 #include <memory>
@@ -31,9 +33,10 @@ public:
     explicit EpipolarSampling(ID3D11Device* device);
 
     // Draws the sky and the aerial perspective with shafts into the frame's HDR target.
-    // `lightShaftConstants` and `shadowConstants` are the march's (LightShafts::constants).
+    // `lightShaftConstants` and `shadowConstants` are the march's (LightShafts::constants);
+    // `clouds` the clouds' transparency map and its constants (none without constants).
     void render(FrameContext& frame, const LightShaftSettings& settings, const ScatteringLookup& lookup, const ShadowInputs& shadows,
-                ID3D11Buffer* lightShaftConstants, ID3D11Buffer* shadowConstants);
+                ID3D11Buffer* lightShaftConstants, ID3D11Buffer* shadowConstants, const CloudShadowInputs& clouds = {});
 
     // The epipolar passes' constants for these settings, this view (the frame's constants
     // hold the camera and the sun), the camera's forward axis and the cascades (the trees are
@@ -63,7 +66,8 @@ public:
 private:
     // Slots of the passes' shared inputs (shaders/lightshafts/epipolar_inputs.hlsli).
     enum Input { SceneRadiance, SceneDepth, NetDensity, SingleTable, HighOrderTable, MultipleTable, ShadowMap, CameraDepth, SliceEnds,
-                 Samples, Coarse, Extinction, Sources, Marched, Interpolated, List, ListArguments, SliceLines, Trees, CascadeParts, InputCount };
+                 Samples, Coarse, Extinction, Sources, Marched, Interpolated, List, ListArguments, SliceLines, Trees, CascadeParts, CloudShadowMap,
+                 InputCount };
     using Inputs = std::array<ID3D11ShaderResourceView*, InputCount>;
 
     void resize(ID3D11Device* device, int slices, int samples, int width, int height);
@@ -82,12 +86,13 @@ private:
 
     ConstantBuffer<gpu::EpipolarConstants> constants_;
     ConstantBuffer<gpu::CascadePassConstants> cascadePass_;
+    ConstantBuffer<gpu::CloudShadowConstants> noClouds_;  // bound without the clouds' map: up.w == 0
     // Each listed sample's march through each cascade, in the cascade-by-cascade modes.
     StructuredBuffer cascadeParts_;
     unsigned cascadePartCount_ = 0;
     FullscreenPass states_;  // the fixed-function states of the sampling's dots
     Inputs inputs_{};
-    ID3D11Buffer* constantBuffers_[6] = {};
+    ID3D11Buffer* constantBuffers_[7] = {};
     Texture2D cameraDepth_, sliceEnds_, samples_, coarse_, extinction_, sources_, marched_, interpolated_, sliceLines_, trees_;
     MinMaxFormat treeFormat_ = MinMaxFormat::Unorm16;
     std::unique_ptr<WorkList> marchList_, breakList_;

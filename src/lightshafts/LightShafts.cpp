@@ -10,7 +10,8 @@ const ShaderKey kPixelShader{"lightshafts/brute_force.hlsl", "ps_main", "ps_5_0"
 constexpr int kDefaultCascadeResolution = 1024;
 }  // namespace
 
-LightShafts::LightShafts(ID3D11Device* device) : epipolar_(device), fullscreen_(device), constants_(device), noShadows_(device) {}
+LightShafts::LightShafts(ID3D11Device* device)
+    : epipolar_(device), fullscreen_(device), constants_(device), noShadows_(device), noClouds_(device) {}
 
 gpu::LightShaftConstants LightShafts::constants(const LightShaftSettings& settings, const ScatteringLookup& lookup, int cascadeResolution) {
     gpu::LightShaftConstants c{};
@@ -24,7 +25,8 @@ gpu::LightShaftConstants LightShafts::constants(const LightShaftSettings& settin
     return c;
 }
 
-void LightShafts::render(FrameContext& frame, const LightShaftSettings& settings, const ScatteringLookup& lookup, const ShadowInputs& shadows) {
+void LightShafts::render(FrameContext& frame, const LightShaftSettings& settings, const ScatteringLookup& lookup, const ShadowInputs& shadows,
+                         const CloudShadowInputs& cloudInputs) {
     if (!lookup.ready) return;
     ID3D11DeviceContext* context = frame.context;
     constants_.update(context, constants(settings, lookup, shadows.map ? shadows.resolution : 0));
@@ -33,19 +35,26 @@ void LightShafts::render(FrameContext& frame, const LightShaftSettings& settings
         noShadows_.update(context, gpu::ShadowConstants{});
         shadowConstants = noShadows_.get();
     }
-    if (settings.technique == LightShaftTechnique::BruteForce) renderBruteForce(frame, lookup, shadows, shadowConstants);
-    else epipolar_.render(frame, settings, lookup, shadows, constants_.get(), shadowConstants);
+    CloudShadowInputs clouds = cloudInputs;
+    if (!clouds.constants || !clouds.map) {
+        noClouds_.update(context, gpu::CloudShadowConstants{});
+        clouds = {noClouds_.get(), nullptr};
+    }
+    if (settings.technique == LightShaftTechnique::BruteForce) renderBruteForce(frame, lookup, shadows, shadowConstants, clouds);
+    else epipolar_.render(frame, settings, lookup, shadows, constants_.get(), shadowConstants, clouds);
 }
 
-void LightShafts::renderBruteForce(FrameContext& frame, const ScatteringLookup& lookup, const ShadowInputs& shadows, ID3D11Buffer* shadowConstants) {
+void LightShafts::renderBruteForce(FrameContext& frame, const ScatteringLookup& lookup, const ShadowInputs& shadows, ID3D11Buffer* shadowConstants,
+                                   const CloudShadowInputs& clouds) {
     auto pass = frame.profiler.scope("Light shafts (brute force)");
     ID3D11DeviceContext* context = frame.context;
     ID3D11ShaderResourceView* scene = frame.targets.copyHdr(context).srv.Get();
     fullscreen_.bindTarget(context, frame.targets.hdr().rtv.Get(), frame.width(), frame.height());
     context->PSSetSamplers(1, 1, &shadows.comparison);
-    fullscreen_.draw(context, frame.shaders, kVertexShader, kPixelShader, {frame.frameConstants, lookup.atmosphere, constants_.get(), shadowConstants},
+    fullscreen_.draw(context, frame.shaders, kVertexShader, kPixelShader,
+                     {frame.frameConstants, lookup.atmosphere, constants_.get(), shadowConstants, clouds.constants},
                      {scene, frame.targets.depth().srv.Get(), lookup.netDensity, lookup.singleScattering, lookup.highOrderScattering,
-                      lookup.multipleScattering, shadows.map},
+                      lookup.multipleScattering, shadows.map, clouds.map},
                      lookup.linearClamp);
 }
 

@@ -13,6 +13,7 @@
 #include "lightshafts/LightShaftSettings.h"
 #include "lightshafts/LightShaftStructures.h"
 #include "render/FrameContext.h"
+#include "shadows/CloudShadowInputs.h"
 #include "shadows/ShadowInputs.h"
 #include "shadows/ShadowStructures.h"
 
@@ -26,19 +27,23 @@ class LightShafts {
 public:
     explicit LightShafts(ID3D11Device* device);
 
-    // Draws the sky and the aerial perspective with shafts into the frame's HDR target.
-    void render(FrameContext& frame, const LightShaftSettings& settings, const ScatteringLookup& lookup, const ShadowInputs& shadows);
+    // Draws the sky and the aerial perspective with shafts into the frame's HDR target. `clouds`:
+    // the clouds' transparency map, sampled at every step of the march (none: no constants).
+    void render(FrameContext& frame, const LightShaftSettings& settings, const ScatteringLookup& lookup, const ShadowInputs& shadows,
+                const CloudShadowInputs& clouds = {});
 
     // The pass's constants for these settings and modes; `cascadeResolution` bounds the steps.
     static gpu::LightShaftConstants constants(const LightShaftSettings& settings, const ScatteringLookup& lookup, int cascadeResolution);
 
 private:
-    void renderBruteForce(FrameContext& frame, const ScatteringLookup& lookup, const ShadowInputs& shadows, ID3D11Buffer* shadowConstants);
+    void renderBruteForce(FrameContext& frame, const ScatteringLookup& lookup, const ShadowInputs& shadows, ID3D11Buffer* shadowConstants,
+                          const CloudShadowInputs& clouds);
 
     EpipolarSampling epipolar_;
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::LightShaftConstants> constants_;
     ConstantBuffer<gpu::ShadowConstants> noShadows_;  // bound when the cascades are off: mode.x == 0
+    ConstantBuffer<gpu::CloudShadowConstants> noClouds_;  // bound without the clouds' map: up.w == 0
 };
 
 }  // namespace firmament

@@ -65,21 +65,28 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         auto pass = profiler_.scope("Orientation grid");
         orientationGrid_->render(frame, scattering);
     }
-    // 3. The shadow cascades, then 4. the terrain lit by the atmosphere's tables through them.
+    // 3. The clouds' particles, generated and sorted on the GPU, their tables, their light
+    //    occlusion and their shadow map: before the terrain, which they shadow.
+    clouds_->update(frame, state.clouds);
+    // 4. The shadow cascades, then 5. the terrain lit by the atmosphere's tables through them and
+    //    the clouds' shadows.
     if (state.terrain.enabled) renderShadowsAndTerrain(frame, state);
-    // 4b. The clouds' particles, generated and sorted on the GPU, and their tables; the particles'
-    //     view (Show particles) when it draws them as geometry.
+    // 5b. The particles' view as geometry (Show particles: bounding shapes).
     clouds_->renderGeometry(frame, state.clouds);
-    // 5. The sky and the sun where nothing was drawn, 6. the aerial perspective over geometry:
-    //    with light shafts, both in their pass, through the shadow cascades drawn this frame.
+    // 6. The sky and the sun where nothing was drawn, 7. the aerial perspective over geometry:
+    //    with light shafts, both in their pass, through the shadow cascades drawn this frame and,
+    //    by "Shafts from clouds", the clouds (drawn into the cascades, or their transparency map).
     if (lightShaftsDrawn(state)) {
+        const ShaftsFromClouds fromClouds = clouds_->shadowMap().active() ? state.clouds.shaftsFromClouds : ShaftsFromClouds::None;
+        if (fromClouds == ShaftsFromClouds::ShadowMap && state.terrain.enabled) clouds_->mergeShadowsInto(frame, *shadows_);
         const ShadowInputs shadows = state.terrain.enabled ? shadows_->inputs() : ShadowInputs{};
-        lightShafts_->render(frame, state.lightShafts, atmosphere_->scatteringLookup(frame, state.atmosphere), shadows);
+        const CloudShadowInputs cloudShadows = fromClouds == ShaftsFromClouds::TransparencyMap ? clouds_->shadows() : CloudShadowInputs{};
+        lightShafts_->render(frame, state.lightShafts, atmosphere_->scatteringLookup(frame, state.atmosphere), shadows, cloudShadows);
     } else {
         atmosphere_->renderSky(frame, state.atmosphere);
         atmosphere_->renderAerialPerspective(frame, state.atmosphere);
     }
-    // 6b. The clouds, shaded through the tables of the atmosphere model drawn alone (or the
+    // 8. The clouds, shaded through the tables of the atmosphere model drawn alone (or the
     //     particles' translucent view), over the lit scene.
     {
         const AtmosphereSettings& a = state.atmosphere;
@@ -89,9 +96,9 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         const BrunetonLookup brunetonTables = bruneton ? atmosphere_->brunetonLookup(frame, a) : BrunetonLookup{};
         clouds_->renderTranslucent(frame, state.clouds, {yusov ? &yusovTables : nullptr, bruneton ? &brunetonTables : nullptr});
     }
-    // 7. Luminance, exposure, adaptation and tone mapping to the output.
+    // 9. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);
-    // 8. The GUI over the output.
+    // 10. The GUI over the output.
     if (drawGui) {
         auto pass = profiler_.scope("GUI");
         drawGui(output);
@@ -99,7 +106,8 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
     profiler_.endFrame();
 }
 
-// The cascades fit the camera; the terrain is their only caster so far. Casters may stand as far
+// The cascades fit the camera; the terrain is their only caster (the clouds join it for the
+// light shafts with "Shafts from clouds: shadow map", after the terrain is drawn). Casters may stand as far
 // towards the sun as the highest peak can be seen above the sun's elevation, within 200 km.
 void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) {
     terrain_->place(glm::dvec3(state.camera.position));
@@ -112,7 +120,7 @@ void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) 
     }
     auto pass = profiler_.scope("Terrain");
     for (const GroundLighting& lighting : atmosphere_->groundLighting(frame, state.atmosphere))
-        terrain_->render(frame, lighting, shadows_->inputs(), state.terrain);
+        terrain_->render(frame, lighting, shadows_->inputs(), clouds_->shadows(), state.terrain);
 }
 
 gpu::FrameConstants Renderer::frameConstants(const State& state, FrameTime time) const {

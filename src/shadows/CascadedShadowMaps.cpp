@@ -87,10 +87,19 @@ void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& came
 }
 
 void CascadedShadowMaps::render(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster)>& drawCasters) {
+    drawCascades(context, true, [&](ID3D11Buffer* caster, size_t) { drawCasters(caster); });
+}
+
+void CascadedShadowMaps::addCasters(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster, size_t cascade)>& drawCasters) {
+    drawCascades(context, false, drawCasters);
+}
+
+void CascadedShadowMaps::drawCascades(ID3D11DeviceContext* context, bool clear,
+                                      const std::function<void(ID3D11Buffer* caster, size_t cascade)>& drawCasters) {
     if (cascades_.empty()) return;
     context->RSSetState(casterRaster_.Get());
     context->OMSetDepthStencilState(casterDepth_.Get(), 0);
-    context->ClearDepthStencilView(dsv_.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
+    if (clear) context->ClearDepthStencilView(dsv_.Get(), D3D11_CLEAR_DEPTH, 1.0f, 0);
     context->OMSetRenderTargets(0, nullptr, dsv_.Get());
     for (size_t i = 0; i < cascades_.size(); ++i) {
         // The cascade's tile; clipping to the clip volume keeps each cascade inside its own.
@@ -98,7 +107,7 @@ void CascadedShadowMaps::render(ID3D11DeviceContext* context, const std::functio
         D3D11_VIEWPORT viewport{size * static_cast<float>(i % kAtlasColumns), size * static_cast<float>(i / kAtlasColumns), size, size, 0.0f, 1.0f};
         context->RSSetViewports(1, &viewport);
         casterBuffer_.update(context, gpu::ShadowCasterConstants{glm::mat4(cascades_[i].worldToClip)});
-        drawCasters(casterBuffer_.get());
+        drawCasters(casterBuffer_.get(), i);
     }
     context->OMSetRenderTargets(0, nullptr, nullptr);
     context->RSSetState(nullptr);

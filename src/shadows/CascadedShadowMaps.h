@@ -33,6 +33,9 @@ public:
     // buffer, the atlas bound as the depth target, the cascade's tile as the viewport, and a
     // biased, unculled rasterizer state.
     void render(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster)>& drawCasters);
+    // Draws more casters into the cascades drawn this frame, without clearing them, in the same
+    // state; drawCasters also gets the cascade's index (its Cascade in cascades()).
+    void addCasters(ID3D11DeviceContext* context, const std::function<void(ID3D11Buffer* caster, size_t cascade)>& drawCasters);
 
     ShadowInputs inputs() const;  // no shadows (mode.x == 0) until update() ran with shadows on
     const std::vector<Cascade>& cascades() const { return cascades_; }
@@ -41,6 +44,7 @@ public:
 
 private:
     void createMap(int resolution, int cascades);
+    void drawCascades(ID3D11DeviceContext* context, bool clear, const std::function<void(ID3D11Buffer* caster, size_t cascade)>& drawCasters);
 
     ID3D11Device* device_;
     ComPtr<ID3D11Texture2D> map_;

@@ -104,7 +104,8 @@ void Terrain::drawLevels(ID3D11DeviceContext* context, unsigned view) {
     }
 }
 
-void Terrain::render(FrameContext& frame, const GroundLighting& lighting, const ShadowInputs& shadows, const TerrainSettings& settings) {
+void Terrain::render(FrameContext& frame, const GroundLighting& lighting, const ShadowInputs& shadows, const CloudShadowInputs& clouds,
+                     const TerrainSettings& settings) {
     ID3D11DeviceContext* context = frame.context;
     const int width = frame.width(), height = frame.height();
     D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
@@ -116,19 +117,20 @@ void Terrain::render(FrameContext& frame, const GroundLighting& lighting, const 
     context->OMSetRenderTargets(1, &hdrFrame, frame.targets.depth().dsv.Get());
     context->OMSetDepthStencilState(depthTest_.Get(), 0);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffff);
-    ID3D11Buffer* buffers[5] = {frame.frameConstants, lighting.atmosphere, lighting.bruneton, constants_.get(), shadows.constants};
+    ID3D11Buffer* buffers[7] = {frame.frameConstants, lighting.atmosphere, lighting.bruneton, constants_.get(), shadows.constants, nullptr,
+                                clouds.constants};
     context->VSSetConstantBuffers(0, 5, buffers);
-    context->PSSetConstantBuffers(0, 5, buffers);
+    context->PSSetConstantBuffers(0, 7, buffers);
     bindFieldTextures(context, true);
-    ID3D11ShaderResourceView* tables[3] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map};
-    context->PSSetShaderResources(2, 3, tables);
+    ID3D11ShaderResourceView* tables[4] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map, clouds.map};
+    context->PSSetShaderResources(2, 4, tables);
     ID3D11SamplerState* samplers[3] = {linearClamp_.Get(), linearWrap_.Get(), shadows.comparison};
     context->PSSetSamplers(0, 3, samplers);
     context->VSSetShader(frame.shaders.vertexShader(kVertexShader), nullptr, 0);
     context->PSSetShader(frame.shaders.pixelShader(pixelShader(lighting.model)), nullptr, 0);
     drawLevels(context, static_cast<unsigned>(settings.view));
-    ID3D11ShaderResourceView* none[5] = {};
-    context->PSSetShaderResources(0, 5, none);
+    ID3D11ShaderResourceView* none[6] = {};
+    context->PSSetShaderResources(0, 6, none);
     context->VSSetShaderResources(0, 2, none);
     context->RSSetState(nullptr);
     context->OMSetDepthStencilState(nullptr, 0);

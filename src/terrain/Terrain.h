@@ -8,6 +8,7 @@
 #include "terrain/TerrainStructures.h"
 #include "gpu/ShaderLibrary.h"
 #include "gpu/Texture.h"
+#include "shadows/CloudShadowInputs.h"
 #include "shadows/ShadowInputs.h"
 #include "terrain/ClipmapLayout.h"
 #include "terrain/ClipmapMesh.h"
@@ -39,7 +40,9 @@ public:
 
     // The lit surface into the frame's HDR target, testing and writing its depth, over the
     // columns `lighting` covers.
-    void render(FrameContext& frame, const GroundLighting& lighting, const ShadowInputs& shadows, const TerrainSettings& settings);
+    // The sun's light is shadowed by the cascades and by the clouds' shadow map.
+    void render(FrameContext& frame, const GroundLighting& lighting, const ShadowInputs& shadows, const CloudShadowInputs& clouds,
+                const TerrainSettings& settings);
     // Depth alone into the bound depth target, through `caster` (ShadowCasterConstants at b5).
     void renderDepth(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11Buffer* caster);
 

@@ -8,8 +8,8 @@
 namespace firmament {
 
 // What the terrain's pixels show: the lit surface, or one of its inputs for inspection.
-enum class TerrainView { Shaded, Albedo, Normals, Levels };
-inline constexpr std::array<std::string_view, 4> kTerrainViewNames{"Shaded", "Albedo", "Normals", "Clipmap levels"};
+enum class TerrainView { Shaded, Albedo, Normals, Levels, CloudShadows };
+inline constexpr std::array<std::string_view, 5> kTerrainViewNames{"Shaded", "Albedo", "Normals", "Clipmap levels", "Cloud shadows"};
 
 struct TerrainSettings {
     bool enabled = true;

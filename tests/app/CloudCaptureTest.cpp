@@ -119,7 +119,8 @@ TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
 // broken clouds: the same where no particle is, different where particles are (where they
 // intersect), similar on the whole; Auto runs the per-pixel lists here, bit for bit.
 TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
-    const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=10", L"clouds.cloudiness=0.35"};
+    // The clouds' shadows off: the clear frame is the one without clouds.
+    const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=10", L"clouds.cloudiness=0.35", L"clouds.shadows=off"};
     const std::vector<float> clear = capture("blend-clear", plus(below, {L"clouds.enabled=off"}));
     const std::vector<float> alpha = capture("blend-alpha", plus(below, {L"clouds.volumetricBlending=off"}));
     const std::vector<float> volume = capture("blend-volume", plus(below, {L"clouds.volumetricBlending=on"}));
@@ -147,7 +148,8 @@ TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
 // light on the whole, and the terrain the clouds do not cover keeps its own, but for the pixels
 // along its silhouette.
 TEST(CloudCapture, DownscaleKeepsTheCloudsAndTheTerrainsEdges) {
-    const std::vector<std::wstring> view{L"camera.position=0,1500,0", L"camera.pitch=4", L"camera.yaw=30", L"clouds.cloudiness=0.5"};
+    const std::vector<std::wstring> view{L"camera.position=0,1500,0", L"camera.pitch=4", L"camera.yaw=30", L"clouds.cloudiness=0.5",
+                                         L"clouds.shadows=off"};
     const std::vector<float> clear = capture("downscale-clear", plus(view, {L"clouds.enabled=off"}));
     const std::vector<float> full = capture("downscale-1x", plus(view, {L"clouds.downscale=1x"}));
     ASSERT_FALSE(full.empty());

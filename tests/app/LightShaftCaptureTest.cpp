@@ -8,8 +8,10 @@
 //  - without shafts, single scattering None with higher orders Occluded draws the same light as
 //    with them Unoccluded (the whole ray is lit), not single scattering (docs/atmosphere.md);
 //  - epipolar sampling at its defaults draws, tone mapped, what the brute-force reference draws
-//    (PSNR >= 35 dB) over seven views: the sun ahead high and low, behind, at the side, below the
-//    horizon, from 40 km, and the open sky over the Earth's horizon without terrain;
+//    (PSNR >= 35 dB) over nine views: the sun ahead high and low, behind, at the side, below the
+//    horizon, from 40 km, the open sky over the Earth's horizon without terrain, and below broken
+//    clouds at sunset in both modes of Shafts from clouds;
+//  - the clouds take light out of the haze below them, in both modes;
 //  - every control of the epipolar sampling changes the image.
 #include "core/ExrImage.h"
 #include "core/PngImage.h"
@@ -55,6 +57,48 @@ const std::vector<std::wstring> kNoCasters{L"terrain.enabled=off", L"camera.posi
                                            L"sun.azimuth=10"};
 
 const wchar_t* const kBruteForce = L"lightShafts.technique=Brute-force ray marching";
+
+// Below a layer of broken clouds at sunset, looking toward the sun (the clouds at 2650-3350 m).
+const std::vector<std::wstring> kUnderClouds{L"camera.position=0,1800,0", L"camera.yaw=100", L"camera.pitch=4", L"sun.elevation=6",
+                                             L"sun.azimuth=100", L"clouds.cloudiness=0.5"};
+
+// `view` with the clouds on and `mode` for their shafts.
+std::vector<std::wstring> withClouds(std::vector<std::wstring> view, const wchar_t* mode) {
+    view.insert(view.end(), {L"clouds.enabled=on", mode});
+    return view;
+}
+
+// Shafts from clouds (Yusov 2014): below the layer, the clouds take light out of the haze, in
+// both modes, and never add any; the two modes differ (the shadow map's clouds are opaque where
+// they let through less than half of the light). The scattered light alone, brute force, the
+// clouds drawn alike over all three.
+TEST(LightShaftCapture, ShaftsFromCloudsTakeLightOutOfTheHazeBelowThem) {
+    std::vector<std::wstring> base = kUnderClouds;
+    base.insert(base.end(), {L"lightShafts.enabled=on", L"lightShafts.lightingOnly=on", kBruteForce});
+    const std::vector<float> none = capture("clouds-none", withClouds(base, L"clouds.shaftsFromClouds=None"));
+    const std::vector<float> transparency = capture("clouds-transparency", withClouds(base, L"clouds.shaftsFromClouds=Transparency map"));
+    const std::vector<float> shadowMap = capture("clouds-shadow-map", withClouds(base, L"clouds.shaftsFromClouds=Shadow map"));
+    ASSERT_FALSE(none.empty());
+    ASSERT_EQ(transparency.size(), none.size());
+    ASSERT_EQ(shadowMap.size(), none.size());
+    const size_t pixels = none.size() / 3;
+    int darker[2] = {}, different = 0;
+    const std::vector<float>* modes[2] = {&transparency, &shadowMap};
+    for (size_t i = 0; i < none.size(); ++i) {
+        for (int m = 0; m < 2; ++m) {
+            const float shadowed = (*modes[m])[i];
+            ASSERT_TRUE(std::isfinite(shadowed)) << "component " << i;
+            EXPECT_LE(shadowed, none[i] * 1.001f + 1e-6f) << "component " << i << " of mode " << m << ": a cloud's shadow adds light";
+            if (i % 3 == 1 && shadowed < 0.8f * none[i]) ++darker[m];
+        }
+        if (i % 3 == 1 && std::abs(transparency[i] - shadowMap[i]) > 0.02f * none[i]) ++different;
+    }
+    std::printf("of %zu pixels, %d (transparency map) and %d (shadow map) lose more than 20%% of their scattered light to the clouds; the modes "
+                "differ by more than 2%% at %d\n", pixels, darker[0], darker[1], different);
+    EXPECT_GT(darker[0], static_cast<int>(pixels / 10));
+    EXPECT_GT(darker[1], static_cast<int>(pixels / 10));
+    EXPECT_GT(different, static_cast<int>(pixels / 20));
+}
 
 TEST(LightShaftCapture, WithoutCastersTheBruteForcePassDrawsTheAtmosphere) {
     const std::pair<const wchar_t*, const wchar_t*> modes[] = {
@@ -148,6 +192,10 @@ TEST(LightShaftCapture, EpipolarSamplingMatchesTheBruteForceReference) {
         // No terrain: the Earth's horizon is the only break, and nothing depth-tests it.
         {"open sky over the Earth's horizon", {L"terrain.enabled=off", L"scene.orientationGrid=off", L"camera.position=0,2,0", L"camera.pitch=20",
                                                  L"camera.fieldOfView=75", L"sun.elevation=45", L"sun.azimuth=40"}},
+        // Shafts from clouds: the march reads the clouds' transparency map at every step, or the
+        // clouds are casters in the cascades.
+        {"sunset under broken clouds, transparency map", withClouds(kUnderClouds, L"clouds.shaftsFromClouds=Transparency map")},
+        {"sunset under broken clouds, shadow map", withClouds(kUnderClouds, L"clouds.shaftsFromClouds=Shadow map")},
     };
     constexpr int width = 480, height = 270;
     for (const View& view : views) {

@@ -142,45 +142,75 @@ TEST(TerrainCapture, NoNanOrInfAtAnySunAngle) {
 // The terrain's pixels end to end, against Yusov 2013's shading computed on the CPU from the
 // same frame's albedo and normal views. Scattering and shadows off, so the sun arrives
 // unattenuated (T = 1) and the sky gives its constant 0.1 (ground_lighting.hlsli, model 0):
-//   L = albedo / pi * (max(N . L, 0) + 0.1 * saturate(4 cos(sun zenith) + 0.25) * (1 + N . up) / 2).
-// The view stays within 10 km of the origin, where the local vertical is (0, 1, 0) to 0.1 degree.
-TEST(TerrainCapture, ShadedPixelsFollowTheShadingFormula) {
-    const std::vector<std::wstring> view{L"camera.position=1500,2600,-2000", L"camera.pitch=-35", L"camera.yaw=20", L"sun.elevation=28",
-                                         L"sun.azimuth=-70", L"atmosphere.enabled=off", L"scene.orientationGrid=off", L"shadows.enabled=off"};
-    const auto with = [&](const wchar_t* extra) {
+//   L = albedo / pi * (max(N . L, 0) T_clouds + 0.1 * saturate(4 cos(sun zenith) + 0.25) * (1 + N . up) / 2),
+// T_clouds = 1 without clouds, else the "Cloud shadows" view's. The view stays within 10 km of
+// the origin, where the local vertical is (0, 1, 0) to 0.1 degree. Returns the transmittances.
+std::vector<double> expectShadingFormula(const std::string& name, const std::vector<std::wstring>& extra, bool clouds) {
+    std::vector<std::wstring> view{L"camera.position=1500,2600,-2000", L"camera.pitch=-35", L"camera.yaw=20", L"sun.elevation=28",
+                                   L"sun.azimuth=-70", L"atmosphere.enabled=off", L"scene.orientationGrid=off", L"shadows.enabled=off"};
+    view.insert(view.end(), extra.begin(), extra.end());
+    const auto with = [&](const wchar_t* more) {
         std::vector<std::wstring> v = view;
-        v.push_back(extra);
+        v.push_back(more);
         return v;
     };
-    const ExrFile shaded = captureFrame("formula-shaded", with(L"terrain.view=shaded"));
-    const ExrFile albedo = captureFrame("formula-albedo", with(L"terrain.view=albedo"));
-    const ExrFile normals = captureFrame("formula-normals", with(L"terrain.view=normals"));
+    const ExrFile shaded = captureFrame(name + "-shaded", with(L"terrain.view=shaded"));
+    const ExrFile albedo = captureFrame(name + "-albedo", with(L"terrain.view=albedo"));
+    const ExrFile normals = captureFrame(name + "-normals", with(L"terrain.view=normals"));
+    const ExrFile cloudShadows = clouds ? captureFrame(name + "-clouds", with(L"terrain.view=Cloud shadows")) : ExrFile{};
     const glm::dvec3 toSun(std::get<glm::vec3>(shaded.attributes.at("firmament.directionToSun")));
     const double pi = 3.14159265358979323846;
     const double sky = 0.1 * std::clamp(4.0 * toSun.y + 0.25, 0.0, 1.0);
     int compared = 0, wrong = 0;
     double largest = 0.0;
+    std::vector<double> transmittances;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const glm::vec3 a = pixel(albedo, x, y);
             if (isBackground(a)) continue;
             ++compared;
             const glm::dvec3 n = glm::normalize(glm::dvec3(pixel(normals, x, y)) * 2.0 - 1.0);
-            const double light = std::max(glm::dot(n, toSun), 0.0) + sky * std::clamp((1.0 + n.y) * 0.5, 0.0, 1.0);
+            const double transmittance = clouds ? static_cast<double>(pixel(cloudShadows, x, y).x) : 1.0;
+            transmittances.push_back(transmittance);
+            const double light = std::max(glm::dot(n, toSun), 0.0) * transmittance + sky * std::clamp((1.0 + n.y) * 0.5, 0.0, 1.0);
             const glm::dvec3 expected = glm::dvec3(a) / pi * light;
             const glm::dvec3 got(pixel(shaded, x, y));
             for (int ch = 0; ch < 3; ++ch) {
-                // Relative to albedo / pi: half floats carry 11 bits, and the albedo, the normal
-                // and the result each round.
+                // Relative to albedo / pi: half floats carry 11 bits, and the albedo, the normal,
+                // the transmittance and the result each round.
                 const double error = std::abs(got[ch] - expected[ch]) / (glm::dvec3(a)[ch] / pi);
                 largest = std::max(largest, error);
                 if (error > 0.01 && ++wrong <= 5)
-                    ADD_FAILURE() << "pixel " << x << ", " << y << " channel " << ch << ": " << got[ch] << " against " << expected[ch];
+                    ADD_FAILURE() << name << ": pixel " << x << ", " << y << " channel " << ch << ": " << got[ch] << " against " << expected[ch];
             }
         }
-    std::printf("terrain pixels against the shading formula: %d compared, largest error %.5f of albedo / pi\n", compared, largest);
-    EXPECT_GT(compared, kWidth * kHeight / 2);
-    EXPECT_EQ(wrong, 0);
+    std::printf("%s: terrain pixels against the shading formula: %d compared, largest error %.5f of albedo / pi\n", name.c_str(), compared, largest);
+    EXPECT_GT(compared, kWidth * kHeight / 2) << name;
+    EXPECT_EQ(wrong, 0) << name;
+    return transmittances;
+}
+
+TEST(TerrainCapture, ShadedPixelsFollowTheShadingFormula) {
+    expectShadingFormula("formula", {}, false);
+}
+
+// The clouds' shadows on the ground (Yusov 2014): each pixel's sun term times the clouds'
+// transmittance at it, which the "Cloud shadows" view shows (its values against the particles
+// themselves: CloudParticlesTest). The clouds need the atmosphere to be drawn; their shadows do
+// not. Broken clouds: some ground in their shadow, some in the sun.
+TEST(TerrainCapture, CloudShadowsDarkenTheSunsTermByTheCloudsTransmittance) {
+    const std::vector<double> t = expectShadingFormula("clouds", {L"clouds.enabled=on", L"clouds.cloudiness=0.35"}, true);
+    ASSERT_FALSE(t.empty());
+    const auto share = [&](auto predicate) { return static_cast<double>(std::count_if(t.begin(), t.end(), predicate)) / static_cast<double>(t.size()); };
+    const double shadowed = share([](double v) { return v < 0.5; }), lit = share([](double v) { return v > 0.95; });
+    const double outside = share([](double v) { return !(v >= 0.0 && v <= 1.0); });
+    std::printf("cloud shadows: %.2f of the ground below transmittance 0.5, %.2f above 0.95\n", shadowed, lit);
+    EXPECT_EQ(outside, 0.0) << "a transmittance outside [0, 1]";
+    EXPECT_GT(shadowed, 0.1);
+    EXPECT_GT(lit, 0.1);
+    // "Cloud shadows" off: none.
+    const std::vector<double> off = expectShadingFormula("no-cloud-shadows", {L"clouds.enabled=on", L"clouds.cloudiness=0.35", L"clouds.shadows=off"}, true);
+    EXPECT_EQ(std::count(off.begin(), off.end(), 1.0), static_cast<std::ptrdiff_t>(off.size()));
 }
 
 // The share of pixels that differ by more than 1% between two frames.

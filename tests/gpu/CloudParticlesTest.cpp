@@ -5,6 +5,7 @@
 #include "FrameTest.h"
 #include "clouds/CloudField.h"
 #include "clouds/CloudParticles.h"
+#include "clouds/CloudShadowMap.h"
 #include "clouds/LightSpace.h"
 #include "clouds/ParticleOpacity.h"
 #include "clouds/ParticleTables.h"
@@ -81,6 +82,17 @@ protected:
         return modelCloudField(clouds->constants(), packed, cloudDensityMap(settings.densityResolution), camera.position, kEarthRadius);
     }
 
+    // A small dense field (2 rings of 32 cells out to 20 km) at `cloudiness`, generated for a camera
+    // at `position` under a sun 35 degrees up at azimuth 60, with the particle tables computed:
+    // the particles as the CPU model takes them (empty when the field holds 500 or fewer).
+    struct DenseField {
+        CloudSettings settings;
+        std::unique_ptr<ParticleTablePrecomputation> tables;
+        std::vector<ModelParticle> model;
+    };
+    // The test's frame is then frameAt(position, 0.0) again.
+    DenseField denseField(float cloudiness, glm::vec3 position);
+
     void expectFieldMatches(const CloudSettings& settings, const char* what);
     void expectBackToFront(const char* what);
 
@@ -89,6 +101,27 @@ protected:
     gpu::FrameConstants constants{};
     std::unique_ptr<CloudParticles> clouds;
 };
+
+CloudParticlesTest::DenseField CloudParticlesTest::denseField(float cloudiness, glm::vec3 position) {
+    DenseField field;
+    field.settings.rings = 2;
+    field.settings.ringDimension = 32;
+    field.settings.particleDistance = 2.0e4f;
+    field.settings.cloudiness = cloudiness;
+    sun.elevationDegrees = 35.0f;
+    sun.azimuthDegrees = 60.0f;
+    const ParticleTableParameters tableParameters;
+    field.tables = std::make_unique<ParticleTablePrecomputation>(device(), tableParameters);
+    field.tables->runAll(context(), *productShaderLibrary);
+    const OpticalDepthTableSize& n = tableParameters.opticalDepth;
+    FrameContext frame = frameAt(position, 0.0);
+    clouds->update(frame, field.settings, glm::vec4(n.entryZenith, n.entryAzimuth, n.directionZenith, n.directionAzimuth));
+    const unsigned count = particleCount();
+    if (count <= 500u) return field;
+    for (const gpu::CloudParticle& p : particles(count))
+        field.model.push_back({glm::vec3(p.centre), p.centre.w, p.shape.x, p.shape.y, p.shape.z, 0, 0, 0});
+    return field;
+}
 
 TEST_F(CloudParticlesTest, TheDensityMapMatchesTheCpuTwin) {
     for (int resolution : {128, 1024}) {
@@ -250,25 +283,15 @@ TEST_F(CloudParticlesTest, ParticlesAreFiniteOverPlacesAndEveryControlsExtremes)
 // crossing marched through the particle's density), with and without the early exit; the early
 // exit changes no transmittance by more than its threshold, 0.01.
 TEST_F(CloudParticlesTest, SunTransmittanceFromTheTileListsMatchesACpuWalk) {
-    CloudSettings dense;
-    dense.rings = 2;
-    dense.ringDimension = 32;
-    dense.particleDistance = 2.0e4f;
-    dense.cloudiness = 0.8f;
-    sun.elevationDegrees = 35.0f;
-    sun.azimuthDegrees = 60.0f;
     const glm::vec3 position(0.0f, 1500.0f, 0.0f);
-    ParticleTableParameters tableParameters;
-    ParticleTablePrecomputation tables(device(), tableParameters);
-    tables.runAll(context(), *productShaderLibrary);
-    const OpticalDepthTableSize& n = tableParameters.opticalDepth;
+    DenseField field = denseField(0.8f, position);
     FrameContext frame = frameAt(position, 0.0);
-    clouds->update(frame, dense, glm::vec4(n.entryZenith, n.entryAzimuth, n.directionZenith, n.directionAzimuth));
-    const unsigned count = particleCount();
-    ASSERT_GT(count, 500u);
-    std::vector<ModelParticle> model;
-    for (const gpu::CloudParticle& p : particles(count))
-        model.push_back({glm::vec3(p.centre), p.centre.w, p.shape.x, p.shape.y, p.shape.z, 0, 0, 0});
+    CloudSettings& dense = field.settings;
+    const std::vector<ModelParticle>& model = field.model;
+    ASSERT_FALSE(model.empty());
+    const auto count = static_cast<unsigned>(model.size());
+    const ParticleTablePrecomputation& tables = *field.tables;
+    const ParticleTableParameters tableParameters;
     const glm::dvec3 toSun(sun.direction());
 
     std::vector<float> transmittance[2];
@@ -305,6 +328,96 @@ TEST_F(CloudParticlesTest, SunTransmittanceFromTheTileListsMatchesACpuWalk) {
     for (unsigned k = 0; k < count; ++k) change = std::max(change, static_cast<double>(std::abs(transmittance[1][k] - transmittance[0][k])));
     std::printf("the early exit changes a transmittance by at most %.5f\n", change);
     EXPECT_LE(change, kOpacityEarlyExit);
+}
+
+// The clouds' shadow map (src/clouds/CloudShadowMap.h) read at points below, inside and above the
+// layer (shadows/cloud_shadow.hlsli) against the CPU: the transmittance of every particle the
+// point's ray to the sun crosses, exp(-sum of their optical depths), each chord marched through
+// the particle's density (LightSpace.h's opticalDepthThrough). The map keeps one transmittance
+// and one stretch per 39 m texel, so points within a texel of a particle's rim may differ by
+// much; the bounds are on the mean and on the share of such points. Below the layer the map is
+// exact up to that; inside it the density is taken as uniform along each texel's stretch, an
+// approximation whose error the looser bounds state.
+TEST_F(CloudParticlesTest, TheCloudShadowMapGivesEachPointTheParticlesTransmittanceTowardTheSun) {
+    const glm::vec3 position(300.0f, 1500.0f, -200.0f);
+    const DenseField field = denseField(0.6f, position);
+    FrameContext frame = frameAt(position, 0.0);
+    const CloudSettings& dense = field.settings;
+    const std::vector<ModelParticle>& model = field.model;
+    ASSERT_FALSE(model.empty());
+    const ParticleTablePrecomputation& tables = *field.tables;
+    const ParticleTableParameters tableParameters;
+    CloudShadowMap map(device());
+    map.render(frame, *clouds, tables.tables(), dense);
+    ASSERT_TRUE(map.active());
+
+    // Points on grids around the camera: on the ground below the layer (which spans 2650 to
+    // 3350 m) within 12 km (the near map) and within 36 km (mostly the far map's), in the layer's
+    // middle, and above it.
+    const glm::dvec3 toSun(sun.direction());
+    struct Level {
+        const char* name;
+        double height, spacing;
+    };
+    const Level levels[4] = {{"below the layer", 0.0, 1000.0},
+                             {"below the layer, out to 36 km", 0.0, 3000.0},
+                             {"in its middle", dense.altitude, 1000.0},
+                             {"above it", dense.altitude + dense.thickness + 800.0, 1000.0}};
+    constexpr int side = 24;
+    std::vector<glm::vec4> queries;
+    for (const Level& level : levels)
+        for (int j = 0; j < side; ++j)
+            for (int i = 0; i < side; ++i)
+                queries.emplace_back(position.x + static_cast<float>((i - side / 2 + 0.37) * level.spacing), static_cast<float>(level.height),
+                                     position.z + static_cast<float>((j - side / 2 + 0.61) * level.spacing), 0.0f);
+    const auto count64 = static_cast<unsigned>(queries.size());
+    const StructuredBuffer input = createStructuredBuffer(device(), count64, sizeof(glm::vec4), queries.data(), "cloud shadow queries");
+    const StructuredBuffer output = createStructuredBuffer(device(), count64, sizeof(float), nullptr, "cloud shadow results");
+    ConstantBuffer<gpu::CloudShadowConstants> shadowConstants(device());
+    shadowConstants.update(context(), map.constants());
+    context()->CSSetConstantBuffers(0, 1, shadowConstants.address());
+    ID3D11ShaderResourceView* inputs[2] = {map.mapView(), input.srv.Get()};
+    context()->CSSetShaderResources(0, 2, inputs);
+    context()->CSSetUnorderedAccessViews(0, 1, output.uav.GetAddressOf(), nullptr);
+    context()->CSSetShader(testShaderLibrary->computeShader({"clouds/cloud_shadow_probe.hlsl", "main", "cs_5_0", {}}), nullptr, 0);
+    context()->Dispatch((count64 + 63) / 64, 1, 1);
+    ID3D11UnorderedAccessView* noUav = nullptr;
+    context()->CSSetUnorderedAccessViews(0, 1, &noUav, nullptr);
+    const std::vector<float> fromMap = fromBytes<float>(readBuffer(device(), context(), output.buffer.Get()), count64);
+
+    for (int level = 0; level < 4; ++level) {
+        const char* name = levels[level].name;
+        double sum = 0.0;
+        int shadowed = 0, lit = 0, beyond = 0;
+        for (int k = level * side * side; k < (level + 1) * side * side; ++k) {
+            const glm::dvec3 point(queries[k]);
+            double opticalDepth = 0.0;
+            for (const ModelParticle& q : model) opticalDepth += opticalDepthThrough(q, point, toSun, kEarthRadius, tableParameters.method);
+            const double cpu = std::exp(-opticalDepth);
+            const double difference = std::abs(fromMap[k] - cpu);
+            sum += difference;
+            beyond += difference > 0.25;
+            shadowed += cpu < 0.5;
+            lit += cpu > 0.95;
+            if (difference > 0.25 && beyond <= 3) std::printf("  %s, point %.0f %.0f: map %.4f, particles %.4f\n", name, point.x, point.z, fromMap[k], cpu);
+        }
+        const int points = side * side;
+        std::printf("%s: %d points, %d shadowed below 0.5, %d lit above 0.95; |map - particles| mean %.4f, %d beyond 0.25\n", name, points,
+                    shadowed, lit, sum / points, beyond);
+        if (level == 3) {
+            EXPECT_EQ(shadowed, 0) << "nothing is above the layer";
+            EXPECT_LT(sum / points, 1e-3);
+            continue;
+        }
+        if (level < 2) {
+            // (The particles end 20 km out.)
+            EXPECT_GT(shadowed, points / (level == 0 ? 5 : 10)) << "the test needs shadowed points";
+            EXPECT_GT(lit, points / 10) << "the test needs points in the sun";
+        }
+        // Measured: below, 0.003 and none beyond; in the middle, 0.065 and 8% beyond.
+        EXPECT_LT(sum / points, level < 2 ? 0.01 : 0.08) << name;
+        EXPECT_LE(beyond, points / (level < 2 ? 50 : 10)) << name;
+    }
 }
 
 }  // namespace

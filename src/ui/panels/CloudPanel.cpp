@@ -2,7 +2,8 @@
 // (altitude, thickness), the cloudiness, the density map's resolution and the wind, and the view
 // of the particles' bounding shapes; the blending (volume-aware or alpha, the pixel-ordering path)
 // and what the running path reports, the resolution the clouds are rendered at, and the light
-// occlusion's light-space map and early exit. The grid's size in cells and particles is shown under it.
+// occlusion's light-space map and early exit; the clouds' shadows and how the light shafts see
+// them. The grid's size in cells and particles is shown under it.
 #include "clouds/CloudField.h"
 #include "clouds/CloudGrid.h"
 #include "ui/panels/TechniquePanels.h"
@@ -24,6 +25,10 @@ void clouds(PanelContext& panel) {
     if (c.enabled && !panel.model.cloudBlending.empty()) ImGui::TextWrapped("Running: %s", panel.model.cloudBlending.c_str());
     if (const std::optional<double> progress = panel.model.cloudTableProgress)
         ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
+    ImGui::SeparatorText("Shadows");
+    editSettings(panel, "clouds", {"shadows", "shaftsFromClouds"});
+    if (c.enabled && c.shadows && c.shaftsFromClouds != ShaftsFromClouds::None && !panel.model.state.lightShafts.enabled)
+        ImGui::TextDisabled("Shafts from clouds needs Enable light shafts");
     ImGui::SeparatorText("Layer");
     editSettings(panel, "clouds", {"cloudiness", "altitude", "thickness", "speed", "densityResolution"});
     ImGui::SeparatorText("Cell grid");
