@@ -9,6 +9,8 @@ struct SceneLuminanceConstants {
     float4 source;      // xy: size of the HDR frame in pixels; zw: unused
     float4 adaptation;  // x: weight of the measured value, 1 - exp(-dt / tau) (1: take it as
                         // it is); yzw: unused
+    float4 histogram;   // x: the low percentile, y: the high one (shares of the pixels that are
+                        // not black); zw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(SceneLuminanceConstants);
 

@@ -13,6 +13,12 @@ static const float kLuminanceBlue = 0.0722f;
 // Offset inside the logarithm of the log-average luminance, exp(mean(ln(delta + L)))
 // (Reinhard et al. 2002, eq. 1): keeps black pixels from sending the average to zero.
 static const float kLogLuminanceDelta = 1.0e-4f;
+// Histogram metering: the bins' range of ln(delta + L), their count, and the luminance below
+// which a pixel is black (space, or nothing drawn) and left out.
+static const float kHistogramLowestLog = -12.0f;
+static const float kHistogramHighestLog = 10.0f;
+static const int kHistogramBins = 128;
+static const float kBlackLuminance = 1.0e-6f;
 
 // The largest finite half float: the HDR frame (RGBA16F) holds nothing brighter, and the
 // operators clamp their input to [0, this] so that negative or infinite input cannot make

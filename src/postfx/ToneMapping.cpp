@@ -25,7 +25,7 @@ void ToneMapping::render(FrameContext& frame, const ToneMappingSettings& setting
         }
         {
             auto pass = profiler.scope("Scene luminance");
-            luminance_.measure(context, shaders, hdrFrame, width, height);
+            luminance_.measure(context, shaders, hdrFrame, width, height, settings);
         }
         {
             auto pass = profiler.scope("Light adaptation");
@@ -77,6 +77,8 @@ ExrAttributes ToneMapping::captureAttributes(ID3D11Device* device, ID3D11DeviceC
         {"firmament.toneMapping.luminanceSaturation", settings.luminanceSaturation},
     };
     if (r.measured) a.emplace("firmament.toneMapping.averageLuminance", r.averageLuminance);
+    if (settings.autoExposure)
+        a.emplace("firmament.toneMapping.metering", std::string(kMeteringNames[static_cast<size_t>(settings.metering)]));
     return a;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace firmament::tonemap {
 
@@ -77,6 +78,33 @@ double meanLogLuminance(std::span<const glm::dvec3> pixels) {
     for (const glm::dvec3& p : pixels)
         sum += std::log(kLogLuminanceDelta + relativeLuminance(glm::clamp(p, 0.0, static_cast<double>(kMaxRadiance))));
     return pixels.empty() ? std::log(static_cast<double>(kLogLuminanceDelta)) : sum / static_cast<double>(pixels.size());
+}
+
+double histogramMeanLogLuminance(std::span<const float> logTexels, double low, double high) {
+    std::vector<double> counts(kHistogramBins, 0.0), sums(kHistogramBins, 0.0);
+    const double black = std::log(static_cast<double>(kLogLuminanceDelta) + kBlackLuminance);
+    const double range = static_cast<double>(kHistogramHighestLog) - kHistogramLowestLog;
+    double total = 0.0, all = 0.0;
+    for (float value : logTexels) {
+        if (!(value > black)) continue;
+        const double x = std::clamp((value - kHistogramLowestLog) / range, 0.0, 1.0);
+        const int bin = std::min(static_cast<int>(x * kHistogramBins), kHistogramBins - 1);
+        counts[bin] += 1.0;
+        sums[bin] += kHistogramLowestLog + x * range;
+        total += 1.0;
+        all += kHistogramLowestLog + x * range;
+    }
+    if (total == 0.0) return std::log(static_cast<double>(kLogLuminanceDelta));
+    const double from = low * total, to = high * total;
+    double below = 0.0, sum = 0.0, weight = 0.0;
+    for (int bin = 0; bin < kHistogramBins; ++bin) {
+        if (counts[bin] == 0.0) continue;
+        const double overlap = std::max(0.0, std::min(below + counts[bin], to) - std::max(below, from));
+        sum += overlap * sums[bin] / counts[bin];
+        weight += overlap;
+        below += counts[bin];
+    }
+    return weight > 0.0 ? sum / weight : all / total;
 }
 
 double adaptationWeight(double dtSeconds, double timeConstantSeconds) {

@@ -45,6 +45,12 @@ double autoExposure(double averageLuminance, double middleGray, double compensat
 // (Reinhard et al. 2002, eq. 1).
 double meanLogLuminance(std::span<const glm::dvec3> pixels);
 
+// Histogram metering (postfx/luminance_histogram.hlsl): of the values ln(delta + L) of the
+// measurement's 64 x 64 texels, those above ln(delta + kBlackLuminance), binned over
+// [kHistogramLowestLog, kHistogramHighestLog], averaged between the `low` and `high` shares of
+// their count (each bin's values by their mean); ln(delta) when every texel is black.
+double histogramMeanLogLuminance(std::span<const float> logTexels, double low, double high);
+
 // Light adaptation: the fraction of the way from the adapted log luminance to the measured
 // one covered in a frame of `dt` seconds, 1 - exp(-dt / tau). Frames compose: two steps of
 // dt cover what one step of 2 dt does, so the adaptation does not depend on the frame rate.

@@ -169,6 +169,13 @@ HdrImage luminanceTestFrame(int width, int height) {
 
 double cpuMeanLogLuminance(const HdrImage& image) { return tonemap::meanLogLuminance(image.pixels); }
 
+// The metering of Yusov's sample: the log-average of every pixel.
+ToneMappingSettings logAverage() {
+    ToneMappingSettings settings;
+    settings.metering = Metering::LogAverage;
+    return settings;
+}
+
 // A 256 x 256 frame is sampled pixel for pixel: the mip chain's last level is the mean of
 // ln(delta + L) over every pixel, up to float rounding. Other sizes are sampled on a 4 x 4
 // grid per texel of the 64 x 64 target: close to the mean, within the stated 0.02 (2% of the
@@ -179,13 +186,49 @@ TEST_F(ToneMappingGpu, LogAverageLuminanceMatchesTheCpu) {
         const HdrImage image = luminanceTestFrame(size.width, size.height);
         const Texture2D hdr = image.upload(device(), context());
         SceneLuminance luminance(device());
-        luminance.measure(context(), *productShaderLibrary, hdr.srv.Get(), size.width, size.height);
+        luminance.measure(context(), *productShaderLibrary, hdr.srv.Get(), size.width, size.height, logAverage());
         luminance.adapt(context(), *productShaderLibrary, 0.1f);  // the first adapt() takes the measured value
         const double measured = readScalar(luminance.adaptedLogLuminanceTexture());
         const double reference = cpuMeanLogLuminance(image);
         std::printf("%dx%d: ln L_avg GPU %.6f, CPU %.6f (difference %.2e)\n", size.width, size.height, measured, reference,
                     measured - reference);
         EXPECT_NEAR(measured, reference, size.tolerance) << size.width << "x" << size.height;
+    }
+}
+
+// Histogram metering (postfx/luminance_histogram.hlsl) against its CPU twin on the same 64 x 64
+// log-luminance texels (within 0.005: the shader sums in fixed point of 1/256), for the test
+// frame and for a frame whose upper 40% is black, like space above the Earth: there the black is
+// left out, so the metered luminance is the lit part's (within 1%), where the log-average is
+// dragged down by orders of magnitude.
+TEST_F(ToneMappingGpu, HistogramMeteringLeavesBlackOutAndMatchesItsCpuTwin) {
+    HdrImage earth(320, 180);
+    for (int y = 0; y < 180; ++y)
+        for (int x = 0; x < 320; ++x) earth.set(x, y, y < 72 ? glm::dvec3(0.0) : glm::dvec3(5.0 * (1.0 + 0.2 * std::sin(0.3 * x))));
+    struct Case {
+        const char* name;
+        const HdrImage* image;
+    };
+    const HdrImage ramps = luminanceTestFrame(640, 360);
+    for (const Case c : {Case{"test frame", &ramps}, Case{"40% black", &earth}}) {
+        const Texture2D hdr = c.image->upload(device(), context());
+        SceneLuminance luminance(device());
+        const ToneMappingSettings settings;  // Histogram, 10% to 98%
+        ASSERT_EQ(settings.metering, Metering::Histogram);
+        luminance.measure(context(), *productShaderLibrary, hdr.srv.Get(), c.image->width, c.image->height, settings);
+        const double metered = readScalar(luminance.measuredTexture());
+        for (const auto& [what, error] : productShaderLibrary->errors()) ADD_FAILURE() << what << ": " << error;
+        const ReadbackImage texels = readTexture2D(device(), context(), luminance.logLuminanceTexture());
+        ASSERT_EQ(texels.width * texels.height, 64 * 64);
+        const std::vector<float> values = asVector<float>(texels.bytes);
+        const double twin = tonemap::histogramMeanLogLuminance(values, settings.histogramLow, settings.histogramHigh);
+        const double everyPixel = cpuMeanLogLuminance(*c.image);
+        std::printf("%s: metered ln L GPU %.5f, CPU twin %.5f; log-average of every pixel %.5f\n", c.name, metered, twin, everyPixel);
+        EXPECT_NEAR(metered, twin, 0.005) << c.name;
+        if (c.image == &earth) {
+            EXPECT_NEAR(metered, std::log(5.0), 0.01);
+            EXPECT_LT(everyPixel, metered - 3.0);
+        }
     }
 }
 
@@ -198,7 +241,7 @@ TEST_F(ToneMappingGpu, AutoExposureMapsTheAverageToMiddleGray) {
         for (int x = 0; x < 64; ++x) image.set(x, y, radiance);
     const Texture2D hdr = image.upload(device(), context());
     SceneLuminance luminance(device());
-    luminance.measure(context(), *productShaderLibrary, hdr.srv.Get(), 64, 64);
+    luminance.measure(context(), *productShaderLibrary, hdr.srv.Get(), 64, 64, logAverage());
     luminance.adapt(context(), *productShaderLibrary, 1.0f);
 
     ToneMappingSettings settings;
@@ -229,12 +272,12 @@ TEST_F(ToneMappingGpu, LightAdaptationFollowsItsTimeConstantAtAnyFrameRate) {
     const double tau = 0.4;
     for (const int framesPerSecond : {30, 144}) {
         SceneLuminance luminance(device());
-        luminance.measure(context(), *productShaderLibrary, darkFrame.srv.Get(), 64, 64);
+        luminance.measure(context(), *productShaderLibrary, darkFrame.srv.Get(), 64, 64, logAverage());
         luminance.adapt(context(), *productShaderLibrary, 0.5f);  // first frame: adapted to the dark scene
         const double dt = 1.0 / framesPerSecond;
         const float weight = static_cast<float>(tonemap::adaptationWeight(dt, tau));
         for (int frame = 1; frame <= framesPerSecond; ++frame) {  // one second in the bright scene
-            luminance.measure(context(), *productShaderLibrary, brightFrame.srv.Get(), 64, 64);
+            luminance.measure(context(), *productShaderLibrary, brightFrame.srv.Get(), 64, 64, logAverage());
             luminance.adapt(context(), *productShaderLibrary, weight);
             const double t = frame * dt;
             if (frame % (framesPerSecond / 10) != 0) continue;  // check every 0.1 s

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace firmament::tonemap {
@@ -86,6 +87,27 @@ TEST(ToneMappingCurves, AutoExposureBringsTheAverageToMiddleGray) {
     EXPECT_NEAR(autoExposure(4.0, 0.18, 2.0) * 4.0, 0.36, 1e-15);  // +1 EV of compensation
     const std::vector<glm::dvec3> uniform(10, glm::dvec3(2.0));
     EXPECT_NEAR(meanLogLuminance(uniform), std::log(kLogLuminanceDelta + relativeLuminance(glm::dvec3(2.0))), 1e-12);
+}
+
+// Histogram metering: black texels are left out; what remains is averaged between the two
+// percentiles, each bin by the mean of its values (so exactly, when each value has a bin of
+// its own or a bin lies wholly inside the range).
+TEST(ToneMappingCurves, HistogramMeteringAveragesBetweenPercentilesWithoutBlack) {
+    const float black = static_cast<float>(std::log(kLogLuminanceDelta));
+    EXPECT_NEAR(histogramMeanLogLuminance(std::vector<float>(64, black), 0.1, 0.98), std::log(kLogLuminanceDelta), 1e-6) << "all black";
+    // 40 black texels and 60 at ln L = 1.5: the metered value is 1.5, whatever the percentiles.
+    std::vector<float> halves(40, black);
+    halves.insert(halves.end(), 60, 1.5f);
+    for (const auto& [low, high] : {std::pair{0.1, 0.98}, std::pair{0.0, 1.0}, std::pair{0.45, 0.55}})
+        EXPECT_NEAR(histogramMeanLogLuminance(halves, low, high), 1.5, 1e-6) << low << " to " << high;
+    // Four groups of 25 values, one per bin, far apart: between the 25% and 75% percentiles only
+    // the middle two count; from 10%, 15 of the first's 25 too.
+    std::vector<float> groups;
+    for (const float v : {-6.0f, -2.0f, 2.0f, 6.0f}) groups.insert(groups.end(), 25, v);
+    EXPECT_NEAR(histogramMeanLogLuminance(groups, 0.25, 0.75), 0.0, 1e-6);
+    EXPECT_NEAR(histogramMeanLogLuminance(groups, 0.10, 0.75), (15.0 * -6.0 + 25.0 * -2.0 + 25.0 * 2.0) / 65.0, 1e-6);
+    // Values beyond the bins' range count at its ends.
+    EXPECT_NEAR(histogramMeanLogLuminance(std::vector<float>(10, 50.0f), 0.0, 1.0), kHistogramHighestLog, 1e-6);
 }
 
 // Adaptation covers 1 - 1/e of the way in one time constant, and n frames of dt / n cover

@@ -26,7 +26,9 @@ void toneMapping(PanelContext& panel) {
     editSettings(panel, "toneMapping", {"operator", "middleGray", "whitePoint", "luminanceSaturation"});
     ImGui::TextDisabled("%s", operatorControls(t.op).c_str());
     ImGui::SeparatorText("Exposure");
-    editSettings(panel, "toneMapping", {"autoExposure", "lightAdaptation", "adaptationSeconds", "exposure"});
+    editSettings(panel, "toneMapping", {"autoExposure", "metering"});
+    if (t.metering == Metering::Histogram) editSettings(panel, "toneMapping", {"histogramLow", "histogramHigh"});
+    editSettings(panel, "toneMapping", {"lightAdaptation", "adaptationSeconds", "exposure"});
     if (!t.autoExposure) {
         ImGui::TextWrapped("Manual: radiance x %.4g (2^EV). The middle gray applies with auto exposure.", exposure.exposure);
     } else if (exposure.measured) {
