@@ -218,7 +218,10 @@ int App::run() {
         update();
         const bool last = frames != 0 && frame + 1 == frames;
         const bool capture = last && options_.capture;
-        renderFrame(!capture || options_.captureUi);
+        const bool flightCapture = options_.capture && !dueCaptures_.empty();
+        renderFrame((!capture && !flightCapture) || options_.captureUi);
+        if (options_.capture)
+            for (const std::string& name : dueCaptures_) captureFrame(name);
         if (capture) captureFrame();
         if (swapChain_) swapChain_->present(state_.display.vsync);
     }
@@ -250,6 +253,7 @@ void App::update() {
     FlightInput input = keyboardMouse_.takeFrameInput(state_.flight);
     input += hidDevices_.poll(now, state_.devices);
     input += xinputPads_.poll(now, state_.devices);
+    dueCaptures_.clear();
     if (flight_ && !flightDone_) {
         // The recorded path drives, and input waits for its end. The frame at or past the end shows
         // the last keyframe exactly: a one-keyframe flight is a still view.
@@ -257,6 +261,10 @@ void App::update() {
         state_.camera = view.camera;
         state_.sun = view.sun;
         flightDone_ = now >= flight_->duration();
+        // (A microsecond's tolerance: the fixed steps add up to a keyframe's time only to rounding.)
+        constexpr double kTolerance = 1e-6;
+        dueCaptures_ = flight_->capturesBetween(flightShown_ + kTolerance, now + kTolerance);
+        flightShown_ = now;
     } else {
         fly(state_.camera, state_.sun, state_.flight, input, dt);
         if (state_.atmosphere.animateSun) animateSun(state_.sun, dt);
@@ -303,7 +311,7 @@ void App::renderFrame(bool drawGui) {
     handleRequests(requests);
 }
 
-void App::captureFrame() {
+void App::captureFrame(const std::string& name) {
     ID3D11Device* device = device_.device();
     ID3D11DeviceContext* context = device_.context();
     const FrameTargets& targets = renderer_.targets();
@@ -315,9 +323,9 @@ void App::captureFrame() {
     d.adapter = device_.describe();
     d.frame = static_cast<int>(timer_.frameCount());
     d.techniques = renderer_.captureAttributes(state_);
-    writeCapture(options_.capturePng(), options_.captureExr(), readTexture2D(device, context, outputTexture()),
+    writeCapture(options_.capturePng(name), options_.captureExr(name), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, targets.hdr().texture.Get()), d);
-    log::info("captured " + options_.capturePng().string() + " and " + options_.captureExr().string());
+    log::info("captured " + options_.capturePng(name).string() + " and " + options_.captureExr(name).string());
 }
 
 int App::runBenchmark(const BenchmarkPlan& plan) {

@@ -32,7 +32,8 @@ public:
 private:
     void update();
     void renderFrame(bool drawGui);
-    void captureFrame();
+    // The frame into --capture's files, or with `name` (a flight keyframe's) into PATH-name's.
+    void captureFrame(const std::string& name = {});
     void keepCameraAboveGround();
     void printTimings();
     void onKey(WPARAM key);
@@ -61,6 +62,8 @@ private:
 
     std::optional<FlightPath> flight_;
     bool flightDone_ = false;  // the flight's last keyframe has been shown
+    double flightShown_ = -1.0;  // the flight's time the last frame showed (-1 before the first)
+    std::vector<std::string> dueCaptures_;  // this frame's flight captures
     FlightPath recording_;
     StepTimer timer_;
     FrameTimeHistory frameTimes_;

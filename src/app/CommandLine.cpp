@@ -26,15 +26,17 @@ std::string lowercase(std::string text) {
 
 }  // namespace
 
-std::filesystem::path Options::capturePng() const {
-    auto path = *capture;
-    return path.replace_extension(".png");
+namespace {
+std::filesystem::path captureNamed(const std::filesystem::path& capture, const std::string& name, const char* extension) {
+    std::filesystem::path path = capture;
+    if (!name.empty()) path.replace_filename(capture.stem().string() + "-" + name);
+    return path.replace_extension(extension);
 }
+}  // namespace
 
-std::filesystem::path Options::captureExr() const {
-    auto path = *capture;
-    return path.replace_extension(".exr");
-}
+std::filesystem::path Options::capturePng(const std::string& name) const { return captureNamed(*capture, name, ".png"); }
+
+std::filesystem::path Options::captureExr(const std::string& name) const { return captureNamed(*capture, name, ".exr"); }
 
 ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
     ParsedCommandLine result;

@@ -38,8 +38,9 @@ struct Options {
     bool version = false;
 
     int frameCount() const { return frames.value_or(headless ? 30 : 0); }  // 0: until closed
-    std::filesystem::path capturePng() const;
-    std::filesystem::path captureExr() const;
+    // The capture's files; with `name` (a flight keyframe's capture), PATH-name.png and .exr.
+    std::filesystem::path capturePng(const std::string& name = {}) const;
+    std::filesystem::path captureExr(const std::string& name = {}) const;
     std::filesystem::path benchmarkResults() const { return benchmarkOutput.value_or("benchmark-results.json"); }
 };
 

@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -55,6 +56,27 @@ FlightPath FlightPath::load(const std::filesystem::path& path) {
         flight.keyframes_.push_back({time, view});
         previous = view;
     }
+    if (in.contains("captures")) {
+        const json& captures = in["captures"];
+        if (!captures.is_array()) throw SettingsError(where + "captures: expected [{\"time\": ..., \"name\": ...}, ...]");
+        for (size_t i = 0; i < captures.size(); ++i) {
+            const std::string name = where + "captures[" + std::to_string(i) + "]";
+            const json& c = captures[i];
+            if (!c.is_object() || !c.contains("time") || !c["time"].is_number() || !std::isfinite(c["time"].get<double>()) ||
+                c["time"].get<double>() < 0.0)
+                throw SettingsError(name + ": needs a \"time\" in seconds, 0 or more");
+            const json label = c.value("name", json());
+            const std::string text = label.is_string() ? label.get<std::string>() : std::string();
+            const bool named = !text.empty() && std::all_of(text.begin(), text.end(), [](char ch) {
+                return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_';
+            });
+            if (!named) throw SettingsError(name + ".name: " + label.dump() + " must be a name of letters, digits, '-' and '_'");
+            for (const FlightCapture& earlier : flight.captures_)
+                if (earlier.name == text) throw SettingsError(name + ".name: \"" + text + "\" is used twice");
+            flight.captures_.push_back({c["time"].get<double>(), text});
+        }
+        std::stable_sort(flight.captures_.begin(), flight.captures_.end(), [](const FlightCapture& a, const FlightCapture& b) { return a.time < b.time; });
+    }
     return flight;
 }
 
@@ -65,7 +87,13 @@ void FlightPath::save(const std::filesystem::path& path) const {
         entry["time"] = std::round(frame.time * 1000.0) / 1000.0;
         frames.push_back(entry);
     }
-    const std::string text = json{{"format", 1}, {"keyframes", frames}}.dump(2) + "\n";
+    json out{{"format", 1}, {"keyframes", frames}};
+    if (!captures_.empty()) {
+        json captures = json::array();
+        for (const FlightCapture& c : captures_) captures.push_back({{"time", c.time}, {"name", c.name}});
+        out["captures"] = captures;
+    }
+    const std::string text = out.dump(2) + "\n";
     writeFileBytes(path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
@@ -77,6 +105,13 @@ std::string FlightPath::describe() const {
 }
 
 void FlightPath::add(double time, const Camera& camera, const Sun& sun) { keyframes_.push_back({time, Bookmark{camera, sun}}); }
+
+std::vector<std::string> FlightPath::capturesBetween(double after, double upTo) const {
+    std::vector<std::string> names;
+    for (const FlightCapture& c : captures_)
+        if (c.time > after && c.time <= upTo) names.push_back(c.name);
+    return names;
+}
 
 Bookmark FlightPath::at(double time) const {
     if (keyframes_.empty()) return {};

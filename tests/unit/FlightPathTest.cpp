@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
+#include <vector>
 
 namespace firmament {
 namespace {
@@ -74,6 +76,31 @@ TEST(FlightPath, BadFilesNameTheKeyframe) {
     expectError(R"({"keyframes": [{"time": 1}, {"time": 0.5}]})", "keyframes[1].time: 0.5 must be after");
     expectError(R"({"keyframes": [{"time": 0, "camera": {"pitch": 95}}]})", "keyframes[0].camera.pitch: 95 is outside -89 to 89");
     expectError(R"({"keyframes": [{"time": 0, "lens": {}}]})", "keyframes[0].unknown section 'lens'");
+    expectError(R"({"keyframes": [{"time": 0}], "captures": [{"time": 0, "name": "../up"}]})", "captures[0].name: \"../up\" must be a name");
+    expectError(R"({"keyframes": [{"time": 0}], "captures": [{"time": 0, "name": ""}]})", "captures[0].name");
+    expectError(R"({"keyframes": [{"time": 0}], "captures": [{"time": 0}]})", "captures[0].name: null must be a name");
+    expectError(R"({"keyframes": [{"time": 0}], "captures": [{"name": "a"}]})", "captures[0]: needs a \"time\"");
+    expectError(R"({"keyframes": [{"time": 0}], "captures": [{"time": 0, "name": "a"}, {"time": 1, "name": "a"}]})", "captures[1].name: \"a\" is used twice");
+    expectError(R"({"keyframes": [{"time": 0}], "captures": {}})", "captures: expected");
+}
+
+// The flight's captures: read, written back, and each due once, on the first frame at or past its time.
+TEST(FlightPath, CapturesAreDueOnceWhenTheirKeyframeIsReached) {
+    const auto path = std::filesystem::temp_directory_path() / "firmament-flight-captures.json";
+    std::ofstream(path) << R"({"keyframes": [
+        {"time": 0, "camera": {"position": [0, 100, 0]}},
+        {"time": 1, "camera": {"position": [0, 200, 0]}}],
+        "captures": [{"time": 1, "name": "end"}, {"time": 0, "name": "start"}, {"time": 0.5, "name": "middle-view_2"}]})";
+    FlightPath flight = FlightPath::load(path);
+    ASSERT_EQ(flight.size(), 2u);
+    EXPECT_EQ(flight.capturesBetween(-1.0, 0.0), std::vector<std::string>{"start"});
+    EXPECT_TRUE(flight.capturesBetween(0.0, 0.49).empty());
+    EXPECT_EQ(flight.capturesBetween(0.49, 0.51), std::vector<std::string>{"middle-view_2"});
+    EXPECT_EQ(flight.capturesBetween(0.51, 2.0), std::vector<std::string>{"end"});
+    EXPECT_EQ(flight.capturesBetween(-1.0, 2.0), (std::vector<std::string>{"start", "middle-view_2", "end"}));
+    flight.save(path);
+    EXPECT_EQ(FlightPath::load(path).capturesBetween(-1.0, 2.0), (std::vector<std::string>{"start", "middle-view_2", "end"}));
+    std::filesystem::remove_all(path);
 }
 
 }  // namespace
