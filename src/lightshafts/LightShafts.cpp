@@ -35,13 +35,16 @@ void LightShafts::render(FrameContext& frame, const LightShaftSettings& settings
         noShadows_.update(context, gpu::ShadowConstants{});
         shadowConstants = noShadows_.get();
     }
+    if (settings.technique != LightShaftTechnique::BruteForce) {
+        epipolar_.render(frame, settings, lookup, shadows, constants_.get(), shadowConstants, cloudInputs);  // binds its own "none"
+        return;
+    }
     CloudShadowInputs clouds = cloudInputs;
     if (!clouds.constants || !clouds.map) {
         noClouds_.update(context, gpu::CloudShadowConstants{});
         clouds = {noClouds_.get(), nullptr};
     }
-    if (settings.technique == LightShaftTechnique::BruteForce) renderBruteForce(frame, lookup, shadows, shadowConstants, clouds);
-    else epipolar_.render(frame, settings, lookup, shadows, constants_.get(), shadowConstants, clouds);
+    renderBruteForce(frame, lookup, shadows, shadowConstants, clouds);
 }
 
 void LightShafts::renderBruteForce(FrameContext& frame, const ScatteringLookup& lookup, const ShadowInputs& shadows, ID3D11Buffer* shadowConstants,

@@ -43,7 +43,7 @@ private:
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::LightShaftConstants> constants_;
     ConstantBuffer<gpu::ShadowConstants> noShadows_;  // bound when the cascades are off: mode.x == 0
-    ConstantBuffer<gpu::CloudShadowConstants> noClouds_;  // bound without the clouds' map: up.w == 0
+    ConstantBuffer<gpu::CloudShadowConstants> noClouds_;  // the brute force's without the clouds' map: up.w == 0
 };
 
 }  // namespace firmament

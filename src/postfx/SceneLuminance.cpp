@@ -27,7 +27,6 @@ SceneLuminance::SceneLuminance(ID3D11Device* device) : fullscreen_(device), cons
     desc.Usage = D3D11_USAGE_DEFAULT;
     desc.BindFlags = D3D11_BIND_RENDER_TARGET | D3D11_BIND_SHADER_RESOURCE;
     check(device->CreateTexture2D(&desc, nullptr, &logLuminance_), "CreateTexture2D (log luminance)");
-    check(device->CreateShaderResourceView(logLuminance_.Get(), nullptr, &logLuminanceAllLevels_), "CreateShaderResourceView (log luminance)");
     for (UINT level = 0; level < kMipLevels; ++level) {
         D3D11_SHADER_RESOURCE_VIEW_DESC srv{};
         srv.Format = kFormat;

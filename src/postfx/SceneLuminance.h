@@ -45,7 +45,6 @@ private:
     FullscreenPass fullscreen_;
     ConstantBuffer<gpu::SceneLuminanceConstants> constants_;
     ComPtr<ID3D11Texture2D> logLuminance_;
-    ComPtr<ID3D11ShaderResourceView> logLuminanceAllLevels_;
     std::array<ComPtr<ID3D11ShaderResourceView>, kMipLevels> levelViews_;
     std::array<ComPtr<ID3D11RenderTargetView>, kMipLevels> levelTargets_;
     Texture2D histogram_;  // 1 x 1 R32F: the histogram's metered ln(delta + L)
