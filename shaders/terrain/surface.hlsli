@@ -1,8 +1,9 @@
 #ifndef FIRMAMENT_TERRAIN_SURFACE_HLSLI
 #define FIRMAMENT_TERRAIN_SURFACE_HLSLI
 // The terrain's surface (docs/terrain.md): the height field, bilinear at the mip a grid's vertex
-// spacing calls for, plus metre-scale detail noise, on the Earth's sphere. The CPU twin is
-// src/terrain/TerrainSurface.cpp; tests/gpu/TerrainTest.cpp holds the two together.
+// spacing calls for and scaled by where the mountain ranges stand, plus metre-scale detail noise,
+// on the Earth's sphere. The CPU twin is src/terrain/TerrainSurface.cpp; tests/gpu/TerrainTest.cpp
+// holds the two together.
 #include "terrain/terrain_structures.hlsli"
 
 // Wellons' lowbias32 integer hash, as the CPU twin.
@@ -47,6 +48,30 @@ float detailHeight(float2 p, float spacing) {
     return sum;
 }
 
+// Where mountain ranges stand: the CPU twin's rangeMask (TerrainSurface.h), a mask in
+// [kPlainsRelief, 1] over lattices of 45 to 160 km that do not repeat with the height field's
+// tile: warped bands where a noise crosses zero, broken into massifs.
+static const float kPlainsRelief = 0.1;
+static const float2 kRangeOffset = float2(85000.0, -390000.0);
+
+float rangeMask(float2 p) {
+    p += kRangeOffset;
+    float2 q = p + 30000.0 * float2(valueNoise(p / 70000.0, 20), valueNoise(p / 70000.0, 21));
+    float2 a = float2(0.8 * q.x - 0.6 * q.y, 0.6 * q.x + 0.8 * q.y);   // lattices turned by +-37 degrees
+    float2 b = float2(0.8 * q.x + 0.6 * q.y, -0.6 * q.x + 0.8 * q.y);
+    float n = valueNoise(a / 160000.0, 22) + 0.5 * valueNoise(b / 67000.0, 24);
+    float band = 1.0 - sqrt(n * n + 0.04);
+    float massifs = 0.5 + 0.5 * valueNoise(b / 45000.0, 23);
+    return kPlainsRelief + (1.0 - kPlainsRelief) * smoothstep(0.55, 0.8, band * (0.8 + 0.4 * massifs));
+}
+
+// The mask's gradient by central differences over 100 m (its features span tens of km).
+float2 rangeMaskGradient(float2 p) {
+    const float d = 100.0;
+    return float2(rangeMask(p + float2(d, 0.0)) - rangeMask(p - float2(d, 0.0)),
+                  rangeMask(p + float2(0.0, d)) - rangeMask(p - float2(0.0, d))) / (2.0 * d);
+}
+
 // Bilinear between texel centres of mip `mip`, wrapping: loads, not the sampler, so that the
 // weights are full float and the CPU twin can match them.
 float heightFieldAt(TerrainConstants t, Texture2D<float> heights, float2 p, uint mip) {
@@ -63,9 +88,10 @@ float heightFieldAt(TerrainConstants t, Texture2D<float> heights, float2 p, uint
     return lerp(lerp(h00, h10, w.x), lerp(h01, h11, w.x), w.y);
 }
 
-// Height above the sea-level sphere of the surface a grid of spacing `spacing` draws.
+// Height above the sea-level sphere of the surface a grid of spacing `spacing` draws: the range
+// mask times the height field, plus the detail.
 float surfaceHeight(TerrainConstants t, Texture2D<float> heights, float2 p, float spacing, uint mip) {
-    return heightFieldAt(t, heights, p, mip) + detailHeight(p, spacing);
+    return rangeMask(p) * heightFieldAt(t, heights, p, mip) + detailHeight(p, spacing);
 }
 
 // How far the Earth's sphere (centre (0, -R, 0)) lies below the plane y = 0 at p:

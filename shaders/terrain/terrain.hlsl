@@ -31,6 +31,7 @@ Texture2D<float4> sunTransmittanceTable : register(t2);
 Texture2D<float4> skyIrradianceTable : register(t3);
 Texture2D<float> shadowMap : register(t4);
 Texture2DArray<float4> cloudShadowMap : register(t5);
+Texture2D<float> slopeSecondMoment : register(t6);  // E[|dh/dx, dh/dz|^2], mip-mapped
 SamplerState linearClamp : register(s0);
 SamplerState linearWrap : register(s1);
 SamplerComparisonState shadowComparison : register(s2);
@@ -109,12 +110,23 @@ float4 vs_depth(uint id : SV_VertexID) : SV_Position {
     return mul(caster.worldToClip, float4(clipmapVertex(id), 1.0));
 }
 
+struct SurfaceSlope {
+    float3 normal;
+    float variance;  // of the slopes within the pixel's footprint, beyond the mean's
+};
+
 // The surface normal in world space: the height field's slopes (filtered by the hardware for
-// the pixel's footprint), the detail noise's by central differences where a pixel resolves it,
-// and the curvature of the Earth (the surface is y = h - drop(x, z)).
-float3 surfaceNormal(float2 p, float footprint) {
+// the pixel's footprint), scaled by the range mask, plus the mask's own slope times the height
+// (the product rule for h = mask * field), the detail noise's by central differences where a
+// pixel resolves it, and the curvature of the Earth (the surface is y = h - drop(x, z)).
+// The variance: the filtered second moment less the mean's square (LEAN mapping's moments,
+// Olano and Baker 2010), scaled by the mask as the slopes are.
+SurfaceSlope surfaceSlope(float2 p, float footprint) {
     float2 uv = (p / terrain.field.x + 0.5) * terrain.field.z;
-    float2 slope = slopeField.Sample(linearWrap, uv);
+    float mask = rangeMask(p);
+    float2 fieldSlope = slopeField.Sample(linearWrap, uv);
+    float2 slope = mask * fieldSlope + heightField.Sample(linearWrap, uv) * rangeMaskGradient(p);
+    float variance = mask * mask * max(slopeSecondMoment.Sample(linearWrap, uv) - dot(fieldSlope, fieldSlope), 0.0);
     float detailSpacing = max(footprint, 0.5);
     if (detailSpacing < kDetailLongestWavelength * 0.5) {
         float d = 0.25;
@@ -124,18 +136,31 @@ float3 surfaceNormal(float2 p, float footprint) {
     float R = terrain.field.w;
     float2 curvature = p / sqrt(max(R * R - dot(p, p), 1.0));  // d(drop)/dx, d(drop)/dz
     slope -= curvature;
-    return normalize(float3(-slope.x, 1.0, -slope.y));
+    SurfaceSlope s;
+    s.normal = normalize(float3(-slope.x, 1.0, -slope.y));
+    s.variance = variance;
+    return s;
+}
+
+// Steepness 1 - cos(slope angle) for the materials, with the slopes a pixel averages over kept:
+// the cosine of the root-mean-square slope, cos / sqrt(1 + variance / (1 + |mean slope|^2)), so
+// that a far mountainside, whose filtered normal points nearly up, keeps the rock its slopes carry.
+float filteredSteepness(SurfaceSlope s, float3 up) {
+    float cosine = dot(s.normal, up);
+    float meanSlopeSquared = 1.0 / max(cosine * cosine, 1e-4) - 1.0;
+    return 1.0 - cosine * rsqrt(1.0 + s.variance / (1.0 + meanSlopeSquared));
 }
 
 float4 ps_main(TerrainVertex input) : SV_Target {
     float3 world = input.world;
     float2 p = world.xz;
     float footprint = length(fwidth(p));
-    float3 normal = surfaceNormal(p, footprint);
+    SurfaceSlope surface = surfaceSlope(p, footprint);
+    float3 normal = surface.normal;
     float3 up = normalize(float3(p.x, world.y + terrain.field.w, p.y));
     float altitude = world.y + earthDrop(p, terrain.field.w);
     float3 toSun = frame.directionToSun.xyz;
-    float steepness = 1.0 - dot(normal, up);
+    float steepness = filteredSteepness(surface, up);
     float3 albedo = terrainAlbedo(altitude, steepness, p, footprint);
 
     float viewDepth = dot(world - frame.cameraPosition.xyz, shadows.cameraForward.xyz);

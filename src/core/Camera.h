@@ -15,7 +15,7 @@ struct Camera {
     float pitchDegrees = 0.0f;                // positive looks up
     float verticalFovDegrees = 45.0f;         // as Yusov 2013's sample
     float nearPlane = 1.0f;                   // metres
-    float farPlane = 1.0e6f;                  // metres
+    float farPlane = 1.0e7f;                  // metres: beyond the horizon from orbit
 
     static constexpr float kMaxPitchDegrees = 89.0f;  // keeps lookAt's up vector valid
 

@@ -14,7 +14,9 @@
 namespace firmament {
 
 inline constexpr int kClipmapCells = 64;   // cells per side of a level (even; the hole is half of it)
-inline constexpr int kClipmapLevels = 15;  // spacings 1 m .. 16 km: the coarsest reaches 524 km
+// Spacings 1 m .. 131 km: the coarsest reaches 4,194 km, beyond the horizon from 1,000 km up
+// (3,709 km), its corners (5,932 km) still inside the Earth's radius, where the drop is defined.
+inline constexpr int kClipmapLevels = 18;
 inline constexpr double kFinestSpacing = 1.0;
 inline constexpr double kLevelReachOverHeight = 2.5;
 
@@ -30,7 +32,7 @@ struct ClipmapLevel {
 std::vector<ClipmapLevel> clipmapLevels(glm::dvec2 camera, double heightAboveGround);
 
 // The square the terrain covers around the camera: the coarsest level's, centre (x, z) and
-// half-width (524 km).
+// half-width (4,194 km).
 struct ClipmapExtent {
     glm::dvec2 centre{};
     double halfWidth = 0;

@@ -49,6 +49,26 @@ std::vector<glm::vec2> HeightField::slopes(int mip) const {
     return out;
 }
 
+std::vector<std::vector<float>> HeightField::slopeSecondMoments() const {
+    std::vector<std::vector<float>> moments;
+    std::vector<float> finest;
+    finest.reserve(static_cast<size_t>(size_) * static_cast<size_t>(size_));
+    for (const glm::vec2& s : slopes(0)) finest.push_back(static_cast<float>(static_cast<double>(s.x) * s.x + static_cast<double>(s.y) * s.y));
+    moments.push_back(std::move(finest));
+    for (int n = size_ / 2; n >= 1; n /= 2) {
+        const std::vector<float>& finer = moments.back();
+        const size_t fineSize = static_cast<size_t>(n) * 2;
+        std::vector<float> coarser(static_cast<size_t>(n) * static_cast<size_t>(n));
+        for (size_t j = 0; j < static_cast<size_t>(n); ++j)
+            for (size_t i = 0; i < static_cast<size_t>(n); ++i)
+                coarser[j * static_cast<size_t>(n) + i] =
+                    static_cast<float>(0.25 * (static_cast<double>(finer[2 * j * fineSize + 2 * i]) + finer[2 * j * fineSize + 2 * i + 1] +
+                                               finer[(2 * j + 1) * fineSize + 2 * i] + finer[(2 * j + 1) * fineSize + 2 * i + 1]));
+        moments.push_back(std::move(coarser));
+    }
+    return moments;
+}
+
 double HeightField::sample(double x, double z, int mip) const {
     // Texel k of mip m is centred on x = (2^m k + (2^m - 1) / 2) * spacing.
     const double scale = static_cast<double>(1 << mip);

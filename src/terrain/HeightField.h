@@ -26,6 +26,12 @@ public:
     // Mip m's slopes (dh/dx, dh/dz) by central differences, row-major.
     std::vector<glm::vec2> slopes(int mip) const;
 
+    // The slopes' second moment E[|s|^2] over each mip's texels: mip 0 holds |s|^2 of mip 0's
+    // slopes, each coarser mip the 2 x 2 box average of the finer one. Filtered linearly like any
+    // texture, it gives the mean of |s|^2 over a pixel's footprint, so that the variance of the
+    // slopes a pixel covers is E[|s|^2] - |E[s]|^2 (LEAN mapping's moments, Olano and Baker 2010).
+    std::vector<std::vector<float>> slopeSecondMoments() const;
+
     // Bilinear between the texel centres of mip `mip`, wrapping: the shaders' heightAt().
     double sample(double x, double z, int mip) const;
 

@@ -59,6 +59,7 @@ Terrain::Terrain(ID3D11Device* device, HeightField field, double earthRadius)
     }
     heights_ = createMipmappedTexture(device, DXGI_FORMAT_R32_FLOAT, field_.size(), heightMips);
     slopes_ = createMipmappedTexture(device, DXGI_FORMAT_R32G32_FLOAT, field_.size(), slopeMips);
+    slopeMoments_ = createMipmappedTexture(device, DXGI_FORMAT_R32_FLOAT, field_.size(), field_.slopeSecondMoments());
 }
 
 double Terrain::groundHeight(double x, double z) const { return surfaceHeight(field_, x, z, kFinestSpacing); }
@@ -122,15 +123,15 @@ void Terrain::render(FrameContext& frame, const GroundLighting& lighting, const 
     context->VSSetConstantBuffers(0, 5, buffers);
     context->PSSetConstantBuffers(0, 7, buffers);
     bindFieldTextures(context, true);
-    ID3D11ShaderResourceView* tables[4] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map, clouds.map};
-    context->PSSetShaderResources(2, 4, tables);
+    ID3D11ShaderResourceView* tables[5] = {lighting.sunTransmittance, lighting.skyIrradiance, shadows.map, clouds.map, slopeMoments_.srv.Get()};
+    context->PSSetShaderResources(2, 5, tables);
     ID3D11SamplerState* samplers[3] = {linearClamp_.Get(), linearWrap_.Get(), shadows.comparison};
     context->PSSetSamplers(0, 3, samplers);
     context->VSSetShader(frame.shaders.vertexShader(kVertexShader), nullptr, 0);
     context->PSSetShader(frame.shaders.pixelShader(pixelShader(lighting.model)), nullptr, 0);
     drawLevels(context, static_cast<unsigned>(settings.view));
-    ID3D11ShaderResourceView* none[6] = {};
-    context->PSSetShaderResources(0, 6, none);
+    ID3D11ShaderResourceView* none[7] = {};
+    context->PSSetShaderResources(0, 7, none);
     context->VSSetShaderResources(0, 2, none);
     context->RSSetState(nullptr);
     context->OMSetDepthStencilState(nullptr, 0);

@@ -54,6 +54,7 @@ private:
     double earthRadius_;
     Texture2D heights_;  // R32_FLOAT, mip-mapped
     Texture2D slopes_;   // R32G32_FLOAT (dh/dx, dh/dz), mip-mapped
+    Texture2D slopeMoments_;  // R32_FLOAT E[|s|^2], mip-mapped (HeightField::slopeSecondMoments)
     ClipmapMesh mesh_;
     ConstantBuffer<gpu::TerrainConstants> constants_;
     ComPtr<ID3D11SamplerState> linearClamp_, linearWrap_;

@@ -54,22 +54,21 @@ double ridgedMultifractal(double u, double v, int cells, int octaves, std::uint3
     return sum;
 }
 
-double smoothstep(double e0, double e1, double x) {
-    const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
-
-// One sample's height before the lowest valley is moved to sea level.
+// One sample's height before the lowest valley is moved to sea level. Mountains stand all over
+// the tile: where ranges rise and where plains lie between them is decided by a mask that does
+// not repeat with the tile (rangeMask in TerrainSurface.h), so the tile's repetition never shows
+// as a lattice of ranges.
 double rawHeight(const TerrainGeneratorParameters& p, double u, double v) {
-    // Domain warp: bends the ridges away from the lattice's axes.
-    const double warpU = 0.04 * fractalNoise(u, v, p.baseCells, 2, p.seed ^ 0xa5a5u);
-    const double warpV = 0.04 * fractalNoise(u, v, p.baseCells, 2, p.seed ^ 0x5a5au);
+    // Domain warp: bends the ridges away from the lattice's axes. Its displacement (500 m) stays
+    // well below its wavelength (4.1 km): a stronger warp shears the ridges into parallel streaks,
+    // which from 10 km up read as the grain of wood on every slope.
+    const double warpU = 0.015 * fractalNoise(u, v, p.baseCells, 2, p.seed ^ 0xa5a5u);
+    const double warpV = 0.015 * fractalNoise(u, v, p.baseCells, 2, p.seed ^ 0x5a5au);
     const double wu = u + warpU, wv = v + warpV;
-    const double ranges = smoothstep(-0.25, 0.35, fractalNoise(wu, wv, 2, 2, p.seed ^ 0x1234u));  // where mountains stand
     const double hills = 0.5 + 0.5 * fractalNoise(wu, wv, p.baseCells / 2, 5, p.seed ^ 0x4321u);
     const double ridges = ridgedMultifractal(wu, wv, p.baseCells, p.ridgeOctaves, p.seed);
     const double ridge = ridges / 2.0;  // the octaves' amplitudes sum to about 2
-    return p.hillHeight * hills + p.mountainHeight * ranges * ridge * ridge;
+    return p.hillHeight * hills + p.mountainHeight * ridge * ridge;
 }
 
 }  // namespace
@@ -89,7 +88,7 @@ double gradientNoise(double x, double z, int period, std::uint32_t seed) {
 std::string TerrainGeneratorParameters::describe() const {
     std::ostringstream out;
     out.precision(17);
-    out << "terrain generator 2: seed " << seed << ", size " << size << ", spacing " << spacing << " m, base cells " << baseCells
+    out << "terrain generator 3: seed " << seed << ", size " << size << ", spacing " << spacing << " m, base cells " << baseCells
         << ", ridge octaves " << ridgeOctaves << ", mountains " << mountainHeight << " m, hills " << hillHeight << " m";
     return out.str();
 }

@@ -148,7 +148,7 @@ TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
 // light on the whole, and the terrain the clouds do not cover keeps its own, but for the pixels
 // along its silhouette.
 TEST(CloudCapture, DownscaleKeepsTheCloudsAndTheTerrainsEdges) {
-    const std::vector<std::wstring> view{L"camera.position=0,1500,0", L"camera.pitch=4", L"camera.yaw=30", L"clouds.cloudiness=0.5",
+    const std::vector<std::wstring> view{L"camera.position=0,1500,0", L"camera.pitch=4", L"camera.yaw=-60", L"clouds.cloudiness=0.5",
                                          L"clouds.shadows=off"};
     const std::vector<float> clear = capture("downscale-clear", plus(view, {L"clouds.enabled=off"}));
     const std::vector<float> full = capture("downscale-1x", plus(view, {L"clouds.downscale=1x"}));

@@ -120,14 +120,15 @@ TEST(LightShaftCapture, WithoutCastersTheBruteForcePassDrawsTheAtmosphere) {
     }
 }
 
-// Sunrise over the mountains, looking towards the sun: the peaks' shadows cross the haze.
-const std::vector<std::wstring> kSunrise{L"camera.position=0,3200,0", L"camera.yaw=100", L"camera.pitch=-4", L"sun.elevation=5",
-                                         L"sun.azimuth=100"};
+// A low sun over the range north-west of the start, looking towards it: the peaks' shadows
+// cross the haze.
+const std::vector<std::wstring> kLowSun{L"camera.position=0,3200,0", L"camera.yaw=-60", L"camera.pitch=-4", L"sun.elevation=5",
+                                        L"sun.azimuth=-60"};
 
 TEST(LightShaftCapture, ShaftsTakeLightOutOfTheHazeInTheMountainsShadows) {
     // The scattered light alone, marched from the first cascade on, and with nothing marched
     // (the first cascade to march beyond the four there are): the second is unshadowed.
-    std::vector<std::wstring> settings = kSunrise;
+    std::vector<std::wstring> settings = kLowSun;
     settings.insert(settings.end(), {L"lightShafts.enabled=on", L"lightShafts.lightingOnly=on", kBruteForce});
     const std::vector<float> shadowed = capture("shadowed-light", settings);
     settings.push_back(L"lightShafts.firstCascade=7");
@@ -145,7 +146,7 @@ TEST(LightShaftCapture, ShaftsTakeLightOutOfTheHazeInTheMountainsShadows) {
 }
 
 TEST(LightShaftCapture, LightingOnlyShowsTheScatteredLightAlone) {
-    std::vector<std::wstring> settings = kSunrise;
+    std::vector<std::wstring> settings = kLowSun;
     settings.push_back(L"lightShafts.enabled=on");  // epipolar sampling
     const std::vector<float> full = capture("full", settings);
     settings.push_back(L"lightShafts.lightingOnly=on");
@@ -183,7 +184,7 @@ TEST(LightShaftCapture, EpipolarSamplingMatchesTheBruteForceReference) {
         std::vector<std::wstring> settings;
     };
     const std::vector<View> views{
-        {"sun ahead, near the horizon", kSunrise},
+        {"sun ahead, near the horizon", kLowSun},
         {"sun ahead, high", {L"camera.position=0,3200,0", L"camera.yaw=100", L"camera.pitch=10", L"sun.elevation=25", L"sun.azimuth=100"}},
         {"sun behind", {L"camera.position=0,3200,0", L"camera.yaw=-80", L"camera.pitch=-4", L"sun.elevation=5", L"sun.azimuth=100"}},
         {"sun at the side", {L"camera.position=0,3200,0", L"camera.yaw=10", L"camera.pitch=-4", L"sun.elevation=5", L"sun.azimuth=100"}},
@@ -221,7 +222,7 @@ TEST(LightShaftCapture, EpipolarSamplingMatchesTheBruteForceReference) {
 // pixel, so they are moved from a sparse sampling (32 slices of 32 samples), which does.
 TEST(LightShaftCapture, EveryEpipolarControlChangesTheImage) {
     constexpr int width = 192, height = 108;
-    std::vector<std::wstring> base = kSunrise;
+    std::vector<std::wstring> base = kLowSun;
     base.push_back(L"lightShafts.enabled=on");
     const std::vector<float> reference = capture("defaults", base, width, height);
     ASSERT_FALSE(reference.empty());

@@ -58,6 +58,34 @@ bool isBackground(glm::vec3 v) {
     return true;
 }
 
+// The world direction of each pixel's ray and the camera's altitude, from a capture's header.
+struct CapturedRays {
+    explicit CapturedRays(const ExrFile& file) {
+        const glm::mat4 view = std::get<glm::mat4>(file.attributes.at("firmament.view"));
+        camera = glm::vec3(glm::inverse(view)[3]);
+        glm::mat4 rotation = view;
+        rotation[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        clipToDirection = glm::inverse(std::get<glm::mat4>(file.attributes.at("firmament.projection")) * rotation);
+    }
+    glm::dvec3 direction(int x, int y) const {
+        const glm::vec4 ndc((x + 0.5f) / kWidth * 2.0f - 1.0f, 1.0f - (y + 0.5f) / kHeight * 2.0f, 1.0f, 1.0f);
+        const glm::vec4 farPoint = clipToDirection * ndc;
+        return glm::normalize(glm::dvec3(farPoint) / static_cast<double>(farPoint.w));
+    }
+    // Distance along a ray to the sea-level sphere (centre (0, -R, 0)), or a negative value.
+    double distanceToSeaLevel(glm::dvec3 direction) const {
+        const glm::dvec3 fromCentre = glm::dvec3(camera) + glm::dvec3(0.0, kEarthRadius, 0.0);
+        const double b = glm::dot(fromCentre, direction), c = glm::dot(fromCentre, fromCentre) - kEarthRadius * kEarthRadius;
+        const double discriminant = b * b - c;
+        return discriminant < 0.0 ? -1.0 : -b - std::sqrt(discriminant);
+    }
+    // The horizon's dip below the horizontal for the camera's altitude (slightly overestimated).
+    double horizonDip() const { return std::sqrt(2.0 * std::max(static_cast<double>(camera.y), 1.0) / kEarthRadius); }
+
+    glm::vec3 camera{};
+    glm::mat4 clipToDirection{};
+};
+
 struct View {
     const char* name;
     std::vector<std::wstring> camera;
@@ -66,8 +94,8 @@ struct View {
 // Over the clear colour, without the atmosphere or the grid: every pixel whose ray points below
 // the horizon (the geometric dip for the camera's altitude, and half a degree more) must be
 // terrain. The terrain stands on or above the sea-level sphere and its coarsest level reaches
-// 524 km, beyond the horizon from up to 21 km (and a view from 40 km looks steeply down), so a
-// background pixel there is a crack.
+// 4,194 km, beyond the horizon from up to 1,000 km, so a background pixel there is a crack or the
+// terrain's end.
 TEST(TerrainCapture, LevelsMeetWithoutCracks) {
     const std::vector<View> views = {
         {"ground", {L"camera.position=0,0,0", L"camera.pitch=-30"}},  // pushed up to 100 m above the ground
@@ -76,23 +104,19 @@ TEST(TerrainCapture, LevelsMeetWithoutCracks) {
         {"far", {L"camera.position=-12345,300,777", L"camera.yaw=-160", L"camera.pitch=-4"}},
         {"high", {L"camera.position=30000,20000,-50000", L"camera.yaw=120", L"camera.pitch=-45"}},
         {"demo's end", {L"camera.position=6000,40000,9000", L"camera.yaw=120", L"camera.pitch=-60"}},
+        {"orbit", {L"camera.position=0,400000,0", L"camera.pitch=-30"}},  // the horizon 2,260 km away
     };
     for (const View& v : views) {
         std::vector<std::wstring> settings{L"atmosphere.enabled=off", L"scene.orientationGrid=off", L"shadows.enabled=off"};
         settings.insert(settings.end(), v.camera.begin(), v.camera.end());
         const ExrFile file = captureFrame(std::string("cracks-") + v.name, settings);
-        const glm::mat4 view = std::get<glm::mat4>(file.attributes.at("firmament.view"));
-        const glm::vec3 camera = glm::vec3(glm::inverse(view)[3]);
-        glm::mat4 rotation = view;
-        rotation[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-        const glm::mat4 clipToDirection = glm::inverse(std::get<glm::mat4>(file.attributes.at("firmament.projection")) * rotation);
-        const double dip = std::sqrt(2.0 * std::max(static_cast<double>(camera.y), 1.0) / kEarthRadius) + glm::radians(0.5);
+        const CapturedRays rays(file);
+        const glm::vec3 camera = rays.camera;
+        const double dip = rays.horizonDip() + glm::radians(0.5);
         int below = 0, cracks = 0;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x) {
-                const glm::vec4 ndc((x + 0.5f) / kWidth * 2.0f - 1.0f, 1.0f - (y + 0.5f) / kHeight * 2.0f, 1.0f, 1.0f);
-                const glm::vec4 farPoint = clipToDirection * ndc;
-                const glm::dvec3 direction = glm::normalize(glm::dvec3(farPoint) / static_cast<double>(farPoint.w));
+                const glm::dvec3 direction = rays.direction(x, y);
                 if (direction.y > -std::sin(dip)) continue;
                 ++below;
                 if (isBackground(pixel(file, x, y))) {
@@ -121,6 +145,46 @@ TEST(TerrainCapture, TheGridStaysBeyondTheTerrain) {
         for (int x = 0; x < kWidth; ++x)
             if (pixel(a, x, y) != pixel(b, x, y)) ++differing;
     EXPECT_EQ(differing, 0) << "pixels where the grid shows through the terrain";
+}
+
+// Where the terrain ends, nothing may show: seen from 400 km and from 40 km, with the atmosphere
+// and the orientation grid on, the mean luminance of each row of pixels well below the horizon
+// (2 degrees or more) and over 100 km away (where single mountains no longer fill a row) changes
+// smoothly from row to row. A hard edge (the terrain's square against the grid's sphere, as
+// before the clipmap reached the horizon) steps the rows it crosses.
+TEST(TerrainCapture, NoHardEdgeWhereTheTerrainEnds) {
+    const std::vector<View> views = {
+        {"orbit", {L"camera.position=0,400000,0", L"camera.pitch=-30"}},
+        {"stratosphere", {L"camera.position=0,40000,0", L"camera.pitch=-12"}},
+    };
+    for (const View& v : views) {
+        std::vector<std::wstring> settings{L"sun.elevation=40", L"sun.azimuth=30", L"scene.orientationGrid=on"};
+        settings.insert(settings.end(), v.camera.begin(), v.camera.end());
+        const ExrFile file = captureFrame(std::string("edge-") + v.name, settings);
+        const CapturedRays rays(file);
+        const double limit = -std::sin(rays.horizonDip() + glm::radians(2.0));
+        std::vector<double> rowMeans;
+        for (int y = 0; y < kHeight; ++y) {
+            double sum = 0.0;
+            int count = 0;
+            for (int x = 0; x < kWidth; ++x) {
+                const glm::dvec3 direction = rays.direction(x, y);
+                if (direction.y > limit || rays.distanceToSeaLevel(direction) < 100e3) continue;
+                const glm::vec3 c = pixel(file, x, y);
+                sum += 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+                ++count;
+            }
+            if (count == kWidth) rowMeans.push_back(sum / count);
+        }
+        ASSERT_GT(rowMeans.size(), static_cast<size_t>(kHeight / 4)) << v.name << ": the view should look down on distant terrain";
+        double largest = 0.0;
+        for (size_t r = 1; r < rowMeans.size(); ++r) {
+            largest = std::max(largest, std::abs(rowMeans[r] - rowMeans[r - 1]) / std::max(rowMeans[r], rowMeans[r - 1]));
+        }
+        std::printf("view %s: %zu rows below the horizon, largest step of a row's mean luminance %.2f%%\n", v.name, rowMeans.size(),
+                    100.0 * largest);
+        EXPECT_LT(largest, 0.05) << v.name;
+    }
 }
 
 TEST(TerrainCapture, NoNanOrInfAtAnySunAngle) {

@@ -68,7 +68,9 @@ TEST_F(TerrainFunctions, SurfaceMatchesTheCpuTwin) {
         EXPECT_NEAR(results[i].y, field_, 2e-3) << "height field at " << x << ", " << z << " mip " << mip;
         EXPECT_NEAR(results[i].z, detail, 1e-4) << "detail at " << x << ", " << z << " spacing " << spacing;
         EXPECT_NEAR(results[i].w, earthDrop(x, z, R), 1e-6 * earthDrop(x, z, R) + 1e-3) << "drop at " << x << ", " << z;
-        EXPECT_NEAR(results[i].x, surfaceHeight(field, x, z, spacing), 3e-3);
+        // The range mask is evaluated in float 85 to 390 km from its lattice's origin (its
+        // offset): about 1e-6 of the height, 5 mm on a 3.3 km summit.
+        EXPECT_NEAR(results[i].x, surfaceHeight(field, x, z, spacing), 5e-3);
         largest = std::max(largest, std::abs(results[i].x - surfaceHeight(field, x, z, spacing)));
     }
     std::printf("terrain surface: largest difference from the CPU twin %.2e m over %zu points\n", largest, queries.size());

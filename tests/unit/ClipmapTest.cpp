@@ -53,8 +53,11 @@ TEST(ClipmapLayout, HighCamerasSkipTheFinestLevels) {
     EXPECT_EQ(high.front().index, 10);
     EXPECT_FALSE(high.front().hasHole);
     EXPECT_EQ(high.back().index, kClipmapLevels - 1);
-    // The coarsest level reaches beyond the horizon from 20 km up (505 km).
-    EXPECT_GT((kClipmapCells / 2) * std::ldexp(kFinestSpacing, kClipmapLevels - 1), std::sqrt(2.0 * 6.36e6 * 20e3));
+    // The coarsest level reaches beyond the horizon from 1,000 km up (3,709 km), and its corners
+    // stay inside the Earth's radius, where the surface's drop is defined.
+    const double halfWidth = (kClipmapCells / 2) * std::ldexp(kFinestSpacing, kClipmapLevels - 1);
+    EXPECT_GT(halfWidth, std::sqrt(2.0 * 6.371e6 * 1e6 + 1e6 * 1e6));
+    EXPECT_LT(halfWidth * std::sqrt(2.0), 6.36e6);
 }
 
 // Each range covers its grid less the hole exactly once, with clockwise triangles, and is

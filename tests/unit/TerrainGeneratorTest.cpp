@@ -5,10 +5,13 @@
 #include "terrain/TerrainSurface.h"
 #include "core/Error.h"
 
+#include <glm/glm.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 
@@ -43,7 +46,7 @@ TEST(TerrainGenerator, SameParametersGiveBitIdenticalHeights) {
 // contraction of a * b + c, another rounding) changes the terrain, and the cached files' key
 // would no longer describe them. Update the hash only with a new generator version in describe().
 TEST(TerrainGenerator, HeightsMatchTheRecordedHash) {
-    EXPECT_EQ(fnv1a(generateHeights(small())), 0x9304e4ad78cb90d0ull) << std::hex << fnv1a(generateHeights(small()));
+    EXPECT_EQ(fnv1a(generateHeights(small())), 0x3c8258a895996400ull) << std::hex << fnv1a(generateHeights(small()));
 }
 
 TEST(TerrainGenerator, LowestValleyIsAtSeaLevelAndPeaksWithinTheAmplitudes) {
@@ -115,6 +118,34 @@ TEST(HeightField, SlopesAreCentralDifferences) {
     }
 }
 
+// LEAN mapping's second moment: mip 0 holds |s|^2, each coarser mip the box average, so that
+// mip m's texel is the mean of |s|^2 over its 2^m x 2^m samples; at the 1 x 1 mip the mean slope
+// is zero (the field wraps) and the moment is the whole field's slope variance.
+TEST(HeightField, SlopeSecondMomentsAreBoxAveragesOfTheSquaredSlopes) {
+    const HeightField f = sineField(64, 16.0, 100.0);
+    const auto s = f.slopes(0);
+    const auto moments = f.slopeSecondMoments();
+    ASSERT_EQ(static_cast<int>(moments.size()), f.mipCount());
+    const auto squared = [&](int i, int j) {
+        const glm::dvec2 v(s[static_cast<size_t>(j * 64 + i)]);
+        return glm::dot(v, v);
+    };
+    EXPECT_NEAR(moments[0][static_cast<size_t>(5 * 64 + 7)], squared(7, 5), 1e-6);
+    // Mip 2's texel (1, 3) covers samples 4..7 along x and 12..15 along z.
+    double box = 0.0;
+    for (int j = 12; j < 16; ++j)
+        for (int i = 4; i < 8; ++i) box += squared(i, j) / 16.0;
+    EXPECT_NEAR(moments[2][static_cast<size_t>(3 * 16 + 1)], box, 1e-5);
+    // The whole field: the sine's slopes have mean square (A k')^2 / 2 along x (k' the central
+    // difference's k sin(k h) / (k h)), the ramp 0.5 / 16 along z but across the wrap.
+    double all = 0.0;
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) all += squared(i, j) / 4096.0;
+    EXPECT_NEAR(moments.back()[0], all, 1e-5);
+    const double k = 2.0 * 3.141592653589793 / (64 * 16.0);
+    EXPECT_NEAR(all, 0.5 * std::pow(100.0 * std::sin(k * 16.0) / 16.0, 2.0) + std::pow(0.5 / 16.0, 2.0) * 62.0 / 64.0, 0.2 * all);
+}
+
 TEST(TerrainSurface, DetailNoiseFadesOnCoarseGridsAndStaysSmall) {
     double largest = 0.0;
     for (int i = 0; i < 500; ++i) {
@@ -125,6 +156,40 @@ TEST(TerrainSurface, DetailNoiseFadesOnCoarseGridsAndStaysSmall) {
     // The octaves' amplitudes sum to 6% of (64 + 32 + 16 + 8 + 4) m = 7.44 m.
     EXPECT_GT(largest, 1.0);
     EXPECT_LE(largest, kDetailAmplitude * 124.0);
+}
+
+// The range mask: within [kPlainsRelief, 1]; the origin, where the program starts, on a range's
+// flank (mountains within 15 km, the plain's edge too); over 1,000 km both ranges and plains;
+// and no period of the height field's tile (32.8 km) nor of a few multiples of it, so the tile's
+// repetition never shows as a lattice of ranges.
+TEST(TerrainSurface, TheRangeMaskPlacesRangesAndPlainsWithoutRepeatingTheTile) {
+    EXPECT_NEAR(rangeMask(0.0, 0.0), 0.42, 0.01);
+    double highest = 0.0, lowest = 1.0;
+    for (double x = -15000.0; x <= 15000.0; x += 5000.0)
+        for (double z = -15000.0; z <= 15000.0; z += 5000.0) {
+            highest = std::max(highest, rangeMask(x, z));
+            lowest = std::min(lowest, rangeMask(x, z));
+        }
+    EXPECT_GT(highest, 0.95);
+    EXPECT_LT(lowest, 0.3);
+    int ranges = 0, plains = 0, samples = 0;
+    double largestDifferenceOverATile[4] = {};
+    for (int j = 0; j < 100; ++j)
+        for (int i = 0; i < 100; ++i) {
+            const double x = (i - 50) * 10000.0 + 1234.0, z = (j - 50) * 10000.0 - 777.0;
+            const double m = rangeMask(x, z);
+            EXPECT_GE(m, kPlainsRelief);
+            EXPECT_LE(m, 1.0);
+            ranges += m > 0.9;
+            plains += m < kPlainsRelief + 0.05;
+            ++samples;
+            for (int t = 1; t <= 4; ++t)
+                largestDifferenceOverATile[t - 1] = std::max(largestDifferenceOverATile[t - 1], std::abs(m - rangeMask(x + t * 32768.0, z)));
+        }
+    std::printf("ranges %.1f%%, plains %.1f%% of the samples\n", 100.0 * ranges / samples, 100.0 * plains / samples);
+    EXPECT_GT(ranges, samples / 10);
+    EXPECT_GT(plains, samples / 5);
+    for (double d : largestDifferenceOverATile) EXPECT_GT(d, 0.5);
 }
 
 TEST(TerrainSurface, MipChoiceAndEarthDrop) {
