@@ -1,10 +1,10 @@
 # Precompiled headers (docs/building.md, "Build time"): the standard library, GLM and
 # nlohmann-json are parsed once per target group instead of once per translation unit. Not
 # <windows.h> (nor the Direct3D headers that include it): its `near` and `far` macros would
-# reach every file, where they are ordinary names. The project's libraries share one precompiled header, made by
-# firmament_core; the test executables share another, with GoogleTest, made by
-# firmament_test_support. Every source still includes what it uses: the precompiled header
-# only saves the parsing.
+# reach every file, where they are ordinary names. The project's libraries share one
+# precompiled header, made by firmament_core; the test executables share another, with
+# GoogleTest, made by firmament_test_support. Every source still includes what it uses: the
+# precompiled header only saves the parsing.
 option(FIRMAMENT_PRECOMPILED_HEADERS "Precompile the heavy third-party headers" ON)
 
 set(FIRMAMENT_PCH_LIBRARY_HEADERS
