@@ -37,7 +37,13 @@ third_party_key() {
         sha256sum | cut -c1-12
 }
 
-sysroot_ready() { [ "$(cat "$(sysroot_dir)/.firmament-complete" 2>/dev/null)" = "$(third_party_key)" ]; }
+# The portable build's native packages are a stage of their own, keyed by their list's hash.
+portable_key() { sha256sum <"$FIRMAMENT_ROOT/tools/sysroot/packages-portable.txt" | cut -c1-12; }
+
+sysroot_ready() {
+    [ "$(cat "$(sysroot_dir)/.firmament-complete" 2>/dev/null)" = "$(third_party_key)" ] &&
+        [ "$(cat "$(sysroot_dir)/.stamp-portable" 2>/dev/null)" = "$(portable_key)" ]
+}
 
 sysroot_dir() { printf '%s/sysroot-%s' "$FIRMAMENT_CACHE" "$(sysroot_key)"; }
 
@@ -96,4 +102,14 @@ ensure_sysroot() {
     require_root
     require_host_tool bwrap bubblewrap
     sysroot_ready || "$FIRMAMENT_ROOT/tools/sysroot/create"
+}
+
+# build_portable: configures and builds the 'portable' preset (the platform-independent code
+# natively with clang, ASan and UBSan, and the fuzz targets) into build/portable.
+build_portable() {
+    in_sysroot bash -c 'cmake --preset portable >build-portable-configure.log 2>&1 ||
+                            { cat build-portable-configure.log >&2; rm -f build-portable-configure.log; exit 1; }
+                        rm -f build-portable-configure.log
+                        ninja -C build/portable -t recompact >/dev/null
+                        cmake --build --preset portable'
 }

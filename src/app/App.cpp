@@ -338,7 +338,7 @@ int App::runBenchmark(const BenchmarkPlan& plan) {
     std::filesystem::remove_all(scratch, ec);
     const BenchmarkInfo info{kFirmamentVersion, device_.describe(), options_.benchmark ? options_.benchmark->string() : std::string()};
     const std::string text = benchmarkReport(plan, run.results, run.tables, info).dump(2) + "\n";
-    writeFileBytes(options_.benchmarkResults(), std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    writeFileText(options_.benchmarkResults(), text);
     std::fputs(benchmarkTable(plan, run.results, run.tables).c_str(), stdout);
     std::printf("\nbenchmark results written to %s\n", options_.benchmarkResults().string().c_str());
     std::fflush(stdout);

@@ -25,15 +25,16 @@ float lerpDegreesShortWay(float a, float b, float t) {
 
 }  // namespace
 
-FlightPath FlightPath::load(const std::filesystem::path& path) {
-    const auto bytes = readFileBytes(path);
+FlightPath FlightPath::load(const std::filesystem::path& path) { return parse(readFileBytes(path), path.string()); }
+
+FlightPath FlightPath::parse(std::span<const std::uint8_t> bytes, const std::string& fileName) {
     json in;
     try {
         in = json::parse(bytes.begin(), bytes.end());
     } catch (const json::parse_error& e) {
-        throw SettingsError(path.string() + ": not valid JSON: " + e.what());
+        throw SettingsError(fileName + ": not valid JSON: " + e.what());
     }
-    const std::string where = path.string() + ": ";
+    const std::string where = fileName + ": ";
     if (!in.is_object() || !in.contains("keyframes") || !in["keyframes"].is_array() || in["keyframes"].empty())
         throw SettingsError(where + "expected {\"keyframes\": [{\"time\": ..., \"camera\": {...}, \"sun\": {...}}, ...]}");
     FlightPath flight;
@@ -94,7 +95,7 @@ void FlightPath::save(const std::filesystem::path& path) const {
         out["captures"] = captures;
     }
     const std::string text = out.dump(2) + "\n";
-    writeFileBytes(path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    writeFileText(path, text);
 }
 
 std::string FlightPath::describe() const {

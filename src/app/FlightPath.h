@@ -11,7 +11,9 @@
 // at or past each one's time is also captured as PATH-name.png (and .exr).
 #include "settings/State.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,8 @@ class FlightPath {
 public:
     // Throws SettingsError naming the keyframe and key; keyframes must be in time order.
     static FlightPath load(const std::filesystem::path& path);
+    // The same from a file's bytes; `fileName` stands for the file in the messages.
+    static FlightPath parse(std::span<const std::uint8_t> bytes, const std::string& fileName);
     void save(const std::filesystem::path& path) const;
 
     void add(double time, const Camera& camera, const Sun& sun);

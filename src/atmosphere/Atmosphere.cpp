@@ -4,6 +4,7 @@
 #include "atmosphere/bruneton/BrunetonTableFiles.h"
 #include "atmosphere/yusov/YusovTableFiles.h"
 #include "gpu/CommonStates.h"
+#include "tables/TimeTables.h"
 
 #include <cmath>
 

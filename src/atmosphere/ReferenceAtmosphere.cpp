@@ -158,7 +158,6 @@ double ReferenceAtmosphere::sampleByDensity(glm::dvec3 start, glm::dvec3 dir, do
 
 glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder,
                                           std::mt19937_64& random) const {
-    constexpr double kPi = 3.14159265358979323846;
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const auto scattering = [&](glm::dvec3 rho, double cosTheta) {
         return p_.rayleighScattering * rho.x * rayleighPhase(cosTheta) + p_.mieScattering * rho.y * miePhase(cosTheta, p_.mieAsymmetry);
@@ -207,7 +206,6 @@ ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec
 
 ReferenceAtmosphere::Estimate ReferenceAtmosphere::skyIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int maxOrder, int paths,
                                                                 unsigned seed) const {
-    constexpr double kPi = 3.14159265358979323846;
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const glm::dvec3 up = glm::normalize(position);
@@ -228,7 +226,6 @@ ReferenceAtmosphere::Estimate ReferenceAtmosphere::skyIrradiance(glm::dvec3 posi
 }
 
 glm::dvec3 ReferenceAtmosphere::singleScatteringIrradiance(glm::dvec3 position, glm::dvec3 sunDir, int directions) const {
-    constexpr double kPi = 3.14159265358979323846;
     const double goldenAngle = kPi * (3.0 - std::sqrt(5.0));
     const glm::dvec3 up = glm::normalize(position);
     const glm::dvec3 tangent = glm::normalize(glm::cross(up, std::abs(up.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));

@@ -4,6 +4,7 @@
 #include "gpu/CommonStates.h"
 #include "gpu/Readback.h"
 #include "render/FrameContext.h"
+#include "tables/TimeTables.h"
 
 #include <algorithm>
 #include <cstring>

@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/ExrImage.h"
-#include "tables/TableFiles.h"
+#include "tables/TableFileHeaders.h"
 
 #include <glm/geometric.hpp>
 
@@ -271,7 +271,7 @@ void writeParticleScattering(const std::filesystem::path& path, const ParticleSc
         "X = the sun's direction across Z, Y = Z x X: u1 = atan2(d.Y, d.X) / 2pi + 1/2, u2 = acos(d.Z) / (pi/2). Texel centres.");
     a["firmament.lut.layout"] = std::string("x: entry angle within a tile, one tile per view zenith side by side; y: view azimuth");
     a["firmament.lut.generator"] = std::string("firmament --generate-cloud-scattering <file> (tools/generate-cloud-scattering)");
-    writeTableAtomically(path, image, a);
+    writeExr(path, image, a);
 }
 
 ParticleScatteringTable readParticleScattering(const std::filesystem::path& path, const ParticleScatteringParameters& expected) {

@@ -104,7 +104,7 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Parti
             std::memcpy(image.values.data() + (static_cast<size_t>(row) * n.height() + y) * image.width + static_cast<size_t>(column) * n.width(),
                         volume.bytes.data() + (static_cast<size_t>(z) * n.height() + y) * n.width() * 4, static_cast<size_t>(n.width()) * 4);
     }
-    writeTableAtomically(folder / (prefix + kOpticalDepthFile), image, attributes(tables.parameters(), key));
+    writeExr(folder / (prefix + kOpticalDepthFile), image, attributes(tables.parameters(), key));
 }
 
 std::string readTables(ID3D11DeviceContext* context, ParticleTablePrecomputation& tables, const std::string& key, const std::filesystem::path& folder,

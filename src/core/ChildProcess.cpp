@@ -97,7 +97,7 @@ ChildResult runHostShellCommand(const std::string& shellCommand, const std::file
     const std::string text = "(" + shellCommand + ") >" + shellQuote(*hostLog) + " 2>&1\necho $? >" +
                              shellQuote(*hostStatus + ".tmp") + "\nmv " + shellQuote(*hostStatus + ".tmp") + " " +
                              shellQuote(*hostStatus) + "\n";
-    writeFileBytes(script, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    writeFileText(script, text);
 
     std::wstring commandLine = L"/bin/sh \"" + std::filesystem::path(*hostScript).wstring() + L"\"";
     STARTUPINFOW startup{};

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -60,5 +61,10 @@ ExrFile readExr(const std::filesystem::path& path);            // throws Error
 FloatExrFile readFloatExr(const std::filesystem::path& path);  // any pixel type, converted; throws Error
 void writeExr(const std::filesystem::path& path, const FloatImage& image, const ExrAttributes& attributes);
 FloatImageFile readFloatChannelExr(const std::filesystem::path& path);  // channel "Y"; throws Error when it is missing
+
+// The same readers over a file's bytes; `name` stands for the file in the messages. Throws Error.
+ExrFile decodeExr(std::span<const std::uint8_t> bytes, const std::string& name);
+FloatExrFile decodeFloatExr(std::span<const std::uint8_t> bytes, const std::string& name);
+FloatImageFile decodeFloatChannelExr(std::span<const std::uint8_t> bytes, const std::string& name);
 
 }  // namespace firmament

@@ -1,6 +1,7 @@
 #include "core/PngImage.h"
 
 #include "core/Error.h"
+#include "core/ImageLimits.h"
 #include "core/FileIO.h"
 
 #include <zlib.h>
@@ -102,9 +103,13 @@ Rgba8Image decodePng(std::span<const std::uint8_t> file) {
         }
         at += 12 + length;
     }
-    if (channels == 0 || image.width <= 0 || image.height <= 0) throw Error("PNG has no valid IHDR chunk");
+    if (channels == 0) throw Error("PNG has no valid IHDR chunk");
+    if (const std::string why = checkImageSize(image.width, image.height); !why.empty()) throw Error("PNG image: " + why);
 
     const size_t stride = static_cast<size_t>(image.width) * channels;
+    // Deflate expands at most 1032 times: a file too short for its rows is refused before its
+    // rows are allocated (a 30-byte file once asked for 11 GB).
+    if ((stride + 1) * image.height / 1032 > compressed.size()) throw Error("PNG image data is too short for its size");
     std::vector<std::uint8_t> raw((stride + 1) * image.height);
     uLongf rawSize = static_cast<uLongf>(raw.size());
     if (uncompress(raw.data(), &rawSize, compressed.data(), static_cast<uLong>(compressed.size())) != Z_OK ||

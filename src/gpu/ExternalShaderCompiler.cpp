@@ -77,7 +77,7 @@ CompileResult ExternalShaderCompiler::compile(const ShaderKey& key) {
         if (kind_ == ExternalCompilerKind::Vkd3dOnHost) {
             const auto wrapper = scratch_ / (stem + ".hlsl");
             const std::string text = vkd3dWrapperSource(key);
-            writeFileBytes(wrapper, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+            writeFileText(wrapper, text);
             const auto hostRoot = hostPath(root_), hostWrapper = hostPath(wrapper), hostOutput = hostPath(output);
             if (!hostRoot || !hostWrapper || !hostOutput) throw Error("no host path for the shader folders");
             run = runHostShellCommand(vkd3dShellCommand(program_.generic_string(), *hostRoot, key, *hostWrapper, *hostOutput),

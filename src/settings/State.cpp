@@ -81,21 +81,22 @@ void stateFromJson(State& state, const json& in) {
 
 void saveStateFile(State& state, const std::filesystem::path& path) {
     const std::string text = stateToJson(state).dump(2) + "\n";
-    writeFileBytes(path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+    writeFileText(path, text);
 }
 
-void loadStateFile(State& state, const std::filesystem::path& path) {
-    const auto bytes = readFileBytes(path);
+void loadStateFile(State& state, const std::filesystem::path& path) { parseStateFile(state, readFileBytes(path), path.string()); }
+
+void parseStateFile(State& state, std::span<const std::uint8_t> bytes, const std::string& name) {
     json parsed;
     try {
         parsed = json::parse(bytes.begin(), bytes.end());
     } catch (const json::parse_error& e) {  // its message names the line and column
-        throw SettingsError(path.string() + ": not valid JSON: " + e.what());
+        throw SettingsError(name + ": not valid JSON: " + e.what());
     }
     try {
         stateFromJson(state, parsed);
     } catch (const SettingsError& e) {
-        throw SettingsError(path.string() + ": " + e.what());
+        throw SettingsError(name + ": " + e.what());
     }
 }
 

@@ -22,6 +22,8 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -92,6 +94,8 @@ void stateFromJson(State& state, const nlohmann::json& json);
 void saveStateFile(State& state, const std::filesystem::path& path);  // throws Error
 // Throws SettingsError ("path: key: why") for bad content, Error for unreadable files.
 void loadStateFile(State& state, const std::filesystem::path& path);
+// The same from a file's bytes; `name` stands for the file in the messages.
+void parseStateFile(State& state, std::span<const std::uint8_t> bytes, const std::string& name);
 // --set assignments in order; throws SettingsError, `state` unchanged.
 void applyAssignments(State& state, const std::vector<std::string>& assignments);
 

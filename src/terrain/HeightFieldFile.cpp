@@ -1,6 +1,6 @@
 #include "terrain/HeightFieldFile.h"
 
-#include "tables/TableFiles.h"
+#include "tables/TableFileHeaders.h"
 #include "core/Error.h"
 #include "core/Log.h"
 
@@ -13,22 +13,29 @@ std::string heightFieldFileName(const TerrainGeneratorParameters& parameters) {
     return "terrain-" + tableKey(parameters.describe()) + "-heights.exr";
 }
 
+std::optional<HeightField> readHeightFieldFile(const std::filesystem::path& path, const TerrainGeneratorParameters& parameters, std::string& why) {
+    try {
+        FloatImageFile file = readFloatChannelExr(path);
+        why = checkTableHeader(file.attributes, tableKey(parameters.describe()), parameters.size, parameters.size, file.image.width,
+                               file.image.height);
+        if (why.empty()) return HeightField(std::move(file.image.values), parameters.size, parameters.spacing);
+    } catch (const Error& e) {
+        why = e.what();
+    }
+    return std::nullopt;
+}
+
 HeightField loadOrGenerateHeightField(const TerrainGeneratorParameters& parameters, const std::optional<std::filesystem::path>& cacheFolder) {
     const std::string key = tableKey(parameters.describe());
     std::error_code ec;
     if (cacheFolder && std::filesystem::exists(*cacheFolder / heightFieldFileName(parameters), ec)) {
         const auto path = *cacheFolder / heightFieldFileName(parameters);
-        try {
-            FloatImageFile file = readFloatChannelExr(path);
-            const std::string why = checkTableHeader(file.attributes, key, parameters.size, parameters.size, file.image.width, file.image.height);
-            if (why.empty()) {
-                log::info("terrain: height field loaded from " + path.string());
-                return HeightField(std::move(file.image.values), parameters.size, parameters.spacing);
-            }
-            log::warning("terrain: the cached height field " + path.string() + " cannot be used (" + why + "); generating it again");
-        } catch (const Error& e) {
-            log::warning(std::string("terrain: ") + e.what() + "; generating the height field again");
+        std::string why;
+        if (std::optional<HeightField> cached = readHeightFieldFile(path, parameters, why)) {
+            log::info("terrain: height field loaded from " + path.string());
+            return std::move(*cached);
         }
+        log::warning("terrain: the cached height field " + path.string() + " cannot be used (" + why + "); generating the height field again");
     }
     log::info("terrain: generating the height field (" + parameters.describe() + ") ...");
     const auto start = std::chrono::steady_clock::now();
@@ -45,7 +52,7 @@ HeightField loadOrGenerateHeightField(const TerrainGeneratorParameters& paramete
             ExrAttributes attributes{{"firmament.lut.key", key},
                                      {"firmament.terrain.generator", parameters.describe()},
                                      {"firmament.terrain.spacing", static_cast<float>(parameters.spacing)}};
-            writeTableAtomically(*cacheFolder / heightFieldFileName(parameters), image, attributes);
+            writeExr(*cacheFolder / heightFieldFileName(parameters), image, attributes);
             log::info("terrain: height field saved to the cache in " + cacheFolder->string());
         } catch (const Error& e) {
             log::warning(std::string("terrain: the height field was not cached: ") + e.what());

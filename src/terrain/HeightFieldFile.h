@@ -9,12 +9,17 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 namespace firmament {
 
 // Reads the cached field when it is there and valid, else generates it (logging the time) and
 // caches it. A cache that cannot be written is a warning; without a folder nothing is cached.
 HeightField loadOrGenerateHeightField(const TerrainGeneratorParameters& parameters, const std::optional<std::filesystem::path>& cacheFolder);
+
+// The cached field at `path` when it can be read and was made by these parameters; else nullopt,
+// with the reason in `why`. Never throws for a bad file.
+std::optional<HeightField> readHeightFieldFile(const std::filesystem::path& path, const TerrainGeneratorParameters& parameters, std::string& why);
 
 // The cache file's name for these parameters.
 std::string heightFieldFileName(const TerrainGeneratorParameters& parameters);

@@ -1,6 +1,8 @@
 #pragma once
 // Where the test executables find what the build put beside them.
+#ifdef _WIN32
 #include <windows.h>
+#endif
 
 #include <filesystem>
 #include <string>
@@ -8,9 +10,13 @@
 namespace firmament::test {
 
 inline std::filesystem::path executableFolder() {
+#ifdef _WIN32
     wchar_t path[MAX_PATH];
     const DWORD length = GetModuleFileNameW(nullptr, path, MAX_PATH);
     return std::filesystem::path(std::wstring(path, length)).parent_path();
+#else
+    return std::filesystem::read_symlink("/proc/self/exe").parent_path();  // the portable build (Linux)
+#endif
 }
 
 inline std::filesystem::path productShaders() { return executableFolder() / "shaders"; }

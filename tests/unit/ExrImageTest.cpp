@@ -4,6 +4,9 @@
 #include "core/FileIO.h"
 
 #include <Imath/half.h>
+#include <algorithm>
+#include <cstring>
+#include <functional>
 #include <gtest/gtest.h>
 
 namespace firmament {
@@ -120,6 +123,53 @@ TEST(ExrImage, SingleChannelFloatRoundTripsAndRefusesFilesWithoutIt) {
         EXPECT_NE(std::string(e.what()).find("no channel Y"), std::string::npos) << e.what();
     }
     std::filesystem::remove(rgbaPath);
+}
+
+// Found by fuzzing (tests/fuzz/regressions/exr_table): a header whose data window asks for more
+// pixels than any file holds is refused before the pixels are allocated, naming the file.
+TEST(ExrImage, ADataWindowLargerThanTheFileCouldHoldIsRefused) {
+    const auto path = tempPath("firmament-exr-window.exr");
+    writeExr(path, FloatImage{4, 4, std::vector<float>(16, 1.0f)}, {});
+    const std::vector<std::uint8_t> valid = readFileBytes(path);
+    std::filesystem::remove(path);
+    // The attribute is "dataWindow\0box2i\0", its size (16), then min.x, min.y, max.x, max.y.
+    const std::string name("dataWindow\0box2i\0", 17);
+    const auto at = std::search(valid.begin(), valid.end(), name.begin(), name.end());
+    ASSERT_NE(at, valid.end());
+    const size_t maxX = static_cast<size_t>(at - valid.begin()) + name.size() + 4 + 8;
+    const auto withMax = [&](std::int32_t x, std::int32_t y) {
+        std::vector<std::uint8_t> bytes = valid;
+        std::memcpy(&bytes[maxX], &x, 4);  // little-endian, as EXR is and as this machine is
+        std::memcpy(&bytes[maxX + 4], &y, 4);
+        return bytes;
+    };
+    const auto refusal = [](const std::vector<std::uint8_t>& bytes) {
+        try {
+            decodeFloatChannelExr(bytes, "heights.exr");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("decoded");
+    };
+    const std::string wide = refusal(withMax(200000, 3));
+    EXPECT_NE(wide.find("heights.exr"), std::string::npos) << wide;
+    EXPECT_NE(wide.find("exceeds 16384 pixels a side"), std::string::npos) << wide;
+    const std::string big = refusal(withMax(15999, 15999));
+    EXPECT_NE(big.find("is too large for a file of"), std::string::npos) << big;
+    EXPECT_EQ(decodeFloatChannelExr(withMax(3, 3), "heights.exr").image.values.size(), 16u);  // the patch itself is sound
+
+    // A window far from the origin (y from 151587081): its pixels' addresses are computed in 64
+    // bits (UndefinedBehaviorSanitizer in the portable build reports int overflow otherwise).
+    std::vector<std::uint8_t> far = withMax(3, 151587081 + 3);
+    const std::int32_t minY = 151587081;
+    std::memcpy(&far[maxX - 4], &minY, 4);
+    for (const auto& decode : {std::function<void()>([&] { decodeFloatChannelExr(far, "far.exr"); }),
+                               std::function<void()>([&] { decodeExr(far, "far.exr"); })}) {
+        try {
+            decode();
+        } catch (const Error&) {
+        }  // OpenEXR finds the chunks' rows do not match; what matters is no overflow on the way
+    }
 }
 
 }  // namespace

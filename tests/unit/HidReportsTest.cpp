@@ -1,7 +1,6 @@
 // HID report decoding with report bytes as the devices send them (report id first, as
 // hidapi returns them), dead zones, and the mapping to camera motion.
 #include "input/HidReports.h"
-#include "input/XInputPads.h"
 
 #include <gtest/gtest.h>
 
@@ -114,19 +113,6 @@ TEST(HidReports, GamepadAndSpaceMouseFlyTheCamera) {
     mouse = {};
     mouse.translation = {10, 0, 0};  // a resting hand: inside the dead zone
     EXPECT_EQ(spaceMouseFlightInput(mouse, settings).move, glm::vec3(0.0f));
-}
-
-TEST(HidReports, XInputPadState) {
-    XINPUT_GAMEPAD raw{};
-    raw.sThumbLX = -32768;
-    raw.sThumbLY = 32767;
-    raw.bLeftTrigger = 255;
-    raw.wButtons = XINPUT_GAMEPAD_RIGHT_SHOULDER;
-    const GamepadState pad = gamepadFromXInput(raw);
-    EXPECT_FLOAT_EQ(pad.leftStick.x, -1.0f);
-    EXPECT_FLOAT_EQ(pad.leftStick.y, 1.0f);
-    EXPECT_FLOAT_EQ(pad.leftTrigger, 1.0f);
-    EXPECT_TRUE(pad.rightShoulder);
 }
 
 }  // namespace

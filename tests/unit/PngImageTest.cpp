@@ -71,5 +71,30 @@ TEST(PngImage, WriteAndReadFile) {
     EXPECT_THROW(readPng(path), Error);
 }
 
+// Found by fuzzing (tests/fuzz/regressions/png): a header that asks for gigabytes is refused
+// before the rows are allocated.
+TEST(PngImage, AHeaderAskingForMoreThanTheFileHoldsIsRefused) {
+    const std::vector<std::uint8_t> valid = encodePng(Rgba8Image{3, 2, std::vector<std::uint8_t>(24, 7)});
+    const auto withSize = [&](std::uint32_t width, std::uint32_t height) {
+        std::vector<std::uint8_t> bytes = valid;
+        for (int i = 0; i < 4; ++i) {  // IHDR's width and height, big-endian, after the signature and chunk head
+            bytes[16 + i] = static_cast<std::uint8_t>(width >> (24 - 8 * i));
+            bytes[20 + i] = static_cast<std::uint8_t>(height >> (24 - 8 * i));
+        }
+        return bytes;
+    };
+    const auto refusal = [](const std::vector<std::uint8_t>& bytes) {
+        try {
+            decodePng(bytes);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("decoded");
+    };
+    EXPECT_NE(refusal(withSize(0x53000003u, 2)).find("exceeds 16384 pixels a side"), std::string::npos);
+    EXPECT_NE(refusal(withSize(16000, 16000)).find("too short for its size"), std::string::npos);
+    EXPECT_EQ(decodePng(withSize(3, 2)).pixels.size(), 24u);
+}
+
 }  // namespace
 }  // namespace firmament

@@ -106,14 +106,14 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Yusov
         "x: cosine of the zenith angle, -1 to 1 at texel centres; y: altitude, u_h = sqrt(h / H_atm), 0 in the top row. "
         "R, G, B: Rayleigh, Mie and ozone density integrated along the ray to the top (m of sea-level density; the ozone "
         "layer's peak density for B). Rays that meet the ground hold the grazing ray's value.");
-    writeTableAtomically(folder / (prefix + "net-density.exr"), densityImage, a);
+    writeExr(folder / (prefix + "net-density.exr"), densityImage, a);
 
     for (const FourDimensionalTable& table : fourDimensionalTables(tables.tables())) {
         a = commonAttributes(p, key);
         a["firmament.lut.name"] = std::string(table.name);
         a["firmament.lut.dimensions"] = dimensions(n);
         a["firmament.lut.layout"] = tiledLayout(n);
-        writeTableAtomically(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n), a);
+        writeExr(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n), a);
     }
 
     const ReadbackImage ambient = readTexture2D(device, context, tables.tables().ambientLight.texture.Get());
@@ -123,7 +123,7 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Yusov
     a["firmament.lut.name"] = std::string("ambient sky light: irradiance of the whole sky on a horizontal surface on the ground, per unit sun irradiance");
     a["firmament.lut.dimensions"] = std::to_string(n.ambientLight) + " (sun zenith)";
     a["firmament.lut.layout"] = std::string("x: cosine of the sun's zenith angle, -1 to 1 at texel centres (Yusov 2013, eq. 3)");
-    writeTableAtomically(folder / (prefix + "ambient-light.exr"), ambientImage, a);
+    writeExr(folder / (prefix + "ambient-light.exr"), ambientImage, a);
 }
 
 std::string readTables(ID3D11DeviceContext* context, YusovPrecomputation& tables, const std::string& key,
