@@ -17,4 +17,9 @@ function(firmament_warnings target)
     # Windows headers: no min/max macros, Unicode APIs, Windows 10 and later.
     target_compile_definitions(${target} PRIVATE NOMINMAX WIN32_LEAN_AND_MEAN UNICODE _UNICODE
         _WIN32_WINNT=0x0A00)
+    if(MSVC)
+        # MSVC's C library without its "unsafe function" warnings (getenv, _wgetenv in the
+        # tests and the cache folder's look-up), which /WX would make errors.
+        target_compile_definitions(${target} PRIVATE _CRT_SECURE_NO_WARNINGS)
+    endif()
 endfunction()

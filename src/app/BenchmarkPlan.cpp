@@ -143,7 +143,7 @@ BenchmarkPlan loadBenchmarkPlan(const std::filesystem::path& path, const State& 
     json parsed;
     try {
         parsed = json::parse(bytes.begin(), bytes.end());
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large for a double
         throw SettingsError(path.string() + ": not valid JSON: " + e.what());
     }
     return parseBenchmarkPlan(parsed, defaults, path.string());

@@ -31,7 +31,7 @@ FlightPath FlightPath::parse(std::span<const std::uint8_t> bytes, const std::str
     json in;
     try {
         in = json::parse(bytes.begin(), bytes.end());
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large for a double
         throw SettingsError(fileName + ": not valid JSON: " + e.what());
     }
     const std::string where = fileName + ": ";

@@ -4,7 +4,6 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <random>
 #include <system_error>
@@ -30,11 +29,13 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
     return std::filesystem::path(path).concat(suffix);
 }
 
-std::string lastError() { return std::strerror(errno); }
+// The C library's reason for the last failure ("No space left on device").
+std::string lastError() { return std::generic_category().message(errno); }
 
 std::FILE* openForWriting(const std::filesystem::path& path) {
 #ifdef _WIN32
-    return _wfopen(path.c_str(), L"wb");
+    std::FILE* file = nullptr;
+    return _wfopen_s(&file, path.c_str(), L"wb") == 0 ? file : nullptr;
 #else
     return std::fopen(path.c_str(), "wb");
 #endif

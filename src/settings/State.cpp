@@ -90,7 +90,7 @@ void parseStateFile(State& state, std::span<const std::uint8_t> bytes, const std
     json parsed;
     try {
         parsed = json::parse(bytes.begin(), bytes.end());
-    } catch (const json::parse_error& e) {  // its message names the line and column
+    } catch (const json::exception& e) {  // parse_error names the line and column; out_of_range a number too large for a double
         throw SettingsError(name + ": not valid JSON: " + e.what());
     }
     try {

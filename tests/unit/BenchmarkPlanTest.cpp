@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include <string>
 
 namespace firmament {
@@ -86,6 +89,19 @@ TEST(BenchmarkPlan, RefusesMalformedFilesNamingTheField) {
     f.erase("views");
     EXPECT_NE(refusal(f).find("views: is missing"), std::string::npos) << refusal(f);
     EXPECT_NE(refusal(f).find("file.json"), std::string::npos);
+}
+
+// Found by fuzzing the state file: the same JSON reading refuses a number too large for a double.
+TEST(BenchmarkPlan, ANumberTooLargeForADoubleIsAnError) {
+    const auto path = std::filesystem::temp_directory_path() / "firmament-huge-number-plan.json";
+    std::ofstream(path) << R"({"frames": 8e619})";
+    try {
+        loadBenchmarkPlan(path, State{});
+        ADD_FAILURE() << "no error";
+    } catch (const SettingsError& e) {
+        EXPECT_NE(std::string(e.what()).find("not valid JSON"), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
 }
 
 TEST(BenchmarkReport, MedianMinimumAndMaximum) {

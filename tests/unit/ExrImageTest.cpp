@@ -154,13 +154,21 @@ TEST(ExrImage, ADataWindowLargerThanTheFileCouldHoldIsRefused) {
     const std::string wide = refusal(withMax(200000, 3));
     EXPECT_NE(wide.find("heights.exr"), std::string::npos) << wide;
     EXPECT_NE(wide.find("exceeds 16384 pixels a side"), std::string::npos) << wide;
+    // Within the side limit but far more than the file holds: OpenEXR 3.4 (the portable build)
+    // reads the header and leaves it to this check; OpenEXR 3.1 (the MinGW build) already fails
+    // reading the offsets of 16,000 rows. Either way it is refused before any pixel is allocated.
     const std::string big = refusal(withMax(15999, 15999));
+    EXPECT_NE(big.find("heights.exr"), std::string::npos) << big;
+    EXPECT_NE(big, "decoded");
+#ifndef _WIN32
     EXPECT_NE(big.find("is too large for a file of"), std::string::npos) << big;
+#endif
     EXPECT_EQ(decodeFloatChannelExr(withMax(3, 3), "heights.exr").image.values.size(), 16u);  // the patch itself is sound
 
-    // A window far from the origin (y from 151587081): its pixels' addresses are computed in 64
-    // bits (UndefinedBehaviorSanitizer in the portable build reports int overflow otherwise).
-    std::vector<std::uint8_t> far = withMax(3, 151587081 + 3);
+    // A window 2314 pixels wide far from the origin (y from 151587081): its pixels' addresses are
+    // computed in 64 bits (UndefinedBehaviorSanitizer in the portable build reports int overflow
+    // otherwise).
+    std::vector<std::uint8_t> far = withMax(2313, 151587081 + 3);
     const std::int32_t minY = 151587081;
     std::memcpy(&far[maxX - 4], &minY, 4);
     for (const auto& decode : {std::function<void()>([&] { decodeFloatChannelExr(far, "far.exr"); }),

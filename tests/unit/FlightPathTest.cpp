@@ -82,6 +82,8 @@ TEST(FlightPath, BadFilesNameTheKeyframe) {
     expectError(R"({"keyframes": [{"time": 0}], "captures": [{"name": "a"}]})", "captures[0]: needs a \"time\"");
     expectError(R"({"keyframes": [{"time": 0}], "captures": [{"time": 0, "name": "a"}, {"time": 1, "name": "a"}]})", "captures[1].name: \"a\" is used twice");
     expectError(R"({"keyframes": [{"time": 0}], "captures": {}})", "captures: expected");
+    // Found by fuzzing the state file: a number too large for a double is an error, not a crash.
+    expectError(R"({"keyframes": [{"time": 8e619}]})", "not valid JSON");
 }
 
 // The flight's captures: read, written back, and each due once, on the first frame at or past its time.

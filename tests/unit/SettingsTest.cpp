@@ -172,6 +172,10 @@ TEST(Settings, StateFilesReportTheirProblems) {
 
     std::ofstream(folder / "broken.json") << "{\"camera\": {\"yaw\": 10,}}";
     expectSettingsError([&] { loadStateFile(loaded, folder / "broken.json"); }, "broken.json: not valid JSON");
+    // Found by fuzzing (tests/fuzz/regressions/state_file): a number too large for a double made
+    // the JSON library throw out_of_range, which nothing caught.
+    std::ofstream(folder / "huge.json") << R"({"camera": {"yaw": 8e619}})";
+    expectSettingsError([&] { loadStateFile(loaded, folder / "huge.json"); }, "huge.json: not valid JSON");
     std::ofstream(folder / "range.json") << R"({"toneMapping": {"exposure": 99}})";
     expectSettingsError([&] { loadStateFile(loaded, folder / "range.json"); }, "range.json: toneMapping.exposure: 99 is outside -10 to 10");
     EXPECT_THROW(loadStateFile(loaded, folder / "missing.json"), Error);
