@@ -11,6 +11,7 @@
 #include "gpu/SourceShaderCompilers.h"
 #include "FirmamentVersion.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -75,6 +76,36 @@ std::optional<int> digitKey(WPARAM key) {
 
 }  // namespace
 
+DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderCompiler> precompiled, const TableStorage& storage,
+                                 HWND window, int width, int height)
+    : device(deviceOptions(options)),
+      shaders(device.device(), std::move(precompiled)),
+      renderer(device.device(), device.context(), shaders, storage) {
+    log::info("device: " + device.describe());
+
+    // Hot reload compiles from the HLSL folder the build used, unless told otherwise.
+    const auto& compiled = static_cast<const PrecompiledShaders&>(shaders.compiler());
+    const auto sourceRoot = options.shaderSource ? options.shaderSource : compiled.sourceRoot();
+    const auto choice = parseSourceCompilerChoice(options.shaderCompiler).value_or(SourceCompilerChoice::Auto);
+    std::error_code ec;
+    if (choice == SourceCompilerChoice::None) {
+        log::info("shader hot reload: off (--shader-compiler none)");
+    } else if (!sourceRoot || !std::filesystem::is_directory(*sourceRoot, ec)) {
+        if (options.shaderSource) throw Error("--shader-source: '" + options.shaderSource->string() + "' is not a folder");
+        log::warning("shader hot reload: off (the HLSL folder " + (sourceRoot ? sourceRoot->string() : std::string("?")) +
+                     " is not there; pass --shader-source)");
+    } else if (auto compiler = makeSourceCompiler(choice, *sourceRoot)) {
+        log::info("shader hot reload: " + compiler->name() + " from " + sourceRoot->string());
+        shaders.enableHotReload(std::move(compiler), *sourceRoot);
+    } else {
+        log::warning("shader hot reload: off (no shader compiler found: d3dcompiler_47.dll or fxc.exe)");
+    }
+
+    if (!options.headless) swapChain = std::make_unique<SwapChain>(device, window, width, height);
+    overlay = std::make_unique<Overlay>(window, device.device(), device.context());
+    renderer.resize(width, height, !swapChain);
+}
+
 App::App(const Options& options, const State& state, std::optional<FlightPath> flight)
     : options_(checkedOptions(options)),
       state_(state),
@@ -83,44 +114,35 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
                                        options_.width, options_.height, !options_.headless,
                                        Window::Callbacks{&Overlay::handleMessage, [this](WPARAM key) { onKey(key); },
                                                          [this](UINT m, WPARAM w, LPARAM l) { onInput(m, w, l); }})),
-      device_(deviceOptions(options_)),
-      shaders_(device_.device(), std::move(shaderSource_)),
-      renderer_(device_.device(), device_.context(), shaders_, tableStorage(options_)),
+      gpu_(std::make_unique<DeviceResources>(options_, std::move(shaderSource_), tableStorage(options_), window_->handle(), options_.width,
+                                             options_.height)),
       flight_(std::move(flight)) {
-    log::info("device: " + device_.describe());
     if (options_.recordFlight) ensureWritable(*options_.recordFlight);
-
-    // Hot reload compiles from the HLSL folder the build used, unless told otherwise.
-    const auto& precompiled = static_cast<const PrecompiledShaders&>(shaders_.compiler());
-    const auto sourceRoot = options_.shaderSource ? options_.shaderSource : precompiled.sourceRoot();
-    const auto choice = parseSourceCompilerChoice(options_.shaderCompiler).value_or(SourceCompilerChoice::Auto);
-    std::error_code ec;
-    if (choice == SourceCompilerChoice::None) {
-        log::info("shader hot reload: off (--shader-compiler none)");
-    } else if (!sourceRoot || !std::filesystem::is_directory(*sourceRoot, ec)) {
-        if (options_.shaderSource) throw Error("--shader-source: '" + options_.shaderSource->string() + "' is not a folder");
-        log::warning("shader hot reload: off (the HLSL folder " + (sourceRoot ? sourceRoot->string() : std::string("?")) +
-                     " is not there; pass --shader-source)");
-    } else if (auto compiler = makeSourceCompiler(choice, *sourceRoot)) {
-        log::info("shader hot reload: " + compiler->name() + " from " + sourceRoot->string());
-        shaders_.enableHotReload(std::move(compiler), *sourceRoot);
-    } else {
-        log::warning("shader hot reload: off (no shader compiler found: d3dcompiler_47.dll or fxc.exe)");
-    }
-
-    if (!options_.headless)
-        swapChain_ = std::make_unique<SwapChain>(device_, window_->handle(), options_.width, options_.height);
-    overlay_ = std::make_unique<Overlay>(window_->handle(), device_.device(), device_.context());
-    renderer_.resize(options_.width, options_.height, !swapChain_);
     if (options_.headless) timer_.setFixedStep(1.0 / 60.0);  // every headless run sees the same times
 }
 
+void App::recoverFromDeviceLoss(const std::string& why) {
+    const auto start = std::chrono::steady_clock::now();
+    const int width = gpu_->renderer.targets().width();
+    const int height = gpu_->renderer.targets().height();
+    log::warning("the Direct3D device was lost after frame " + std::to_string(timer_.frameCount()) + " (" + why +
+                 "): making every GPU resource again; the settings and the camera are kept");
+    gpu_.reset();  // the old device's objects go first, the GUI's context with them
+    gpu_ = std::make_unique<DeviceResources>(options_, openShaderFolder(options_), tableStorage(options_), window_->handle(), width, height);
+    ++deviceLosses_;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f s", seconds);
+    log::info("device recreated in " + std::string(text) + " (loss " + std::to_string(deviceLosses_) + "); rendering goes on");
+    setNotice("the Direct3D device was lost (" + why + ") and made again", true);
+}
+
 ID3D11RenderTargetView* App::outputTarget() const {
-    return swapChain_ ? swapChain_->backBufferRtv() : renderer_.targets().output().rtv.Get();
+    return gpu_->swapChain ? gpu_->swapChain->backBufferRtv() : gpu_->renderer.targets().output().rtv.Get();
 }
 
 ID3D11Texture2D* App::outputTexture() const {
-    return swapChain_ ? swapChain_->backBuffer() : renderer_.targets().output().texture.Get();
+    return gpu_->swapChain ? gpu_->swapChain->backBuffer() : gpu_->renderer.targets().output().texture.Get();
 }
 
 void App::setNotice(std::string text, bool isError) {
@@ -129,11 +151,13 @@ void App::setNotice(std::string text, bool isError) {
 }
 
 void App::onInput(UINT message, WPARAM wParam, LPARAM lParam) {
-    keyboardMouse_.onMessage(message, wParam, lParam, overlay_ && overlay_->wantsMouse(), overlay_ && overlay_->wantsKeyboard());
+    // (No GUI while the device resources are being made: at start-up and after a device loss.)
+    const bool gui = gpu_ && gpu_->overlay;
+    keyboardMouse_.onMessage(message, wParam, lParam, gui && gpu_->overlay->wantsMouse(), gui && gpu_->overlay->wantsKeyboard());
 }
 
 void App::onKey(WPARAM key) {
-    if (overlay_ && overlay_->wantsKeyboard()) return;
+    if (gpu_ && gpu_->overlay && gpu_->overlay->wantsKeyboard()) return;
     const bool control = GetKeyState(VK_CONTROL) < 0;
     if (const auto slot = digitKey(key)) {
         if (control) {
@@ -157,11 +181,11 @@ void App::onKey(WPARAM key) {
 }
 
 void App::reloadShaders() {
-    if (!shaders_.hotReloadEnabled()) {
+    if (!gpu_->shaders.hotReloadEnabled()) {
         setNotice("shader hot reload is off (see the log)", true);
         return;
     }
-    const ReloadResult result = shaders_.reloadAll();
+    const ReloadResult result = gpu_->shaders.reloadAll();
     if (result.failedTechniques.empty())
         setNotice("reloaded " + std::to_string(result.shadersCompiled) + " shaders in " + std::to_string(static_cast<int>(result.milliseconds)) + " ms", false);
     else
@@ -191,7 +215,7 @@ void App::loadState() {
 }
 
 void App::handleRequests(const GuiRequests& requests) {
-    if (requests.toggleFullScreen && swapChain_) window_->toggleFullScreen();
+    if (requests.toggleFullScreen && gpu_->swapChain) window_->toggleFullScreen();
     if (requests.reloadShaders) reloadShaders();
     if (requests.saveState) saveState();
     if (requests.loadState) loadState();
@@ -210,20 +234,33 @@ int App::run() {
             --frame;
             continue;
         }
-        if (swapChain_ && (window_->clientWidth() != renderer_.targets().width() || window_->clientHeight() != renderer_.targets().height())) {
-            swapChain_->resize(window_->clientWidth(), window_->clientHeight());
-            renderer_.resize(swapChain_->width(), swapChain_->height(), false);
+        if (gpu_->swapChain && (window_->clientWidth() != gpu_->renderer.targets().width() || window_->clientHeight() != gpu_->renderer.targets().height())) {
+            gpu_->swapChain->resize(window_->clientWidth(), window_->clientHeight());
+            gpu_->renderer.resize(gpu_->swapChain->width(), gpu_->swapChain->height(), false);
         }
         timer_.tick();
         update();
         const bool last = frames != 0 && frame + 1 == frames;
         const bool capture = last && options_.capture;
         const bool flightCapture = options_.capture && !dueCaptures_.empty();
-        renderFrame((!capture && !flightCapture) || options_.captureUi);
-        if (options_.capture)
-            for (const std::string& name : dueCaptures_) captureFrame(name);
-        if (capture) captureFrame();
-        if (swapChain_) swapChain_->present(state_.display.vsync);
+        // A device lost mid-frame makes some call fail (an Error); one lost by the time of
+        // Present says so there. Headless frames have no Present: the device is asked.
+        std::string lost;
+        try {
+            renderFrame((!capture && !flightCapture) || options_.captureUi);
+            if (options_.capture)
+                for (const std::string& name : dueCaptures_) captureFrame(name);
+            if (capture) captureFrame();
+            if (gpu_->swapChain) lost = gpu_->swapChain->present(state_.display.vsync);
+        } catch (const Error& e) {
+            lost = gpu_->device.removedReason();
+            if (lost.empty()) throw;
+            lost += std::string(", in the middle of the frame: ") + e.what();
+        }
+        if (lost.empty()) lost = gpu_->device.removedReason();
+        if (lost.empty() && options_.simulateDeviceLoss && frame + 1 == *options_.simulateDeviceLoss)
+            lost = "DXGI_ERROR_DEVICE_REMOVED, simulated by --simulate-device-loss";
+        if (!lost.empty()) recoverFromDeviceLoss(lost);
     }
     if (options_.capture && frames == 0) {  // a windowed run closed by the person: capture the last frame
         renderFrame(options_.captureUi);
@@ -243,9 +280,9 @@ void App::update() {
     const double now = timer_.totalSeconds();
     const float dt = static_cast<float>(timer_.deltaSeconds());
     frameTimes_.add(dt * 1000.0f);
-    if (state_.shaders.autoReload && shaders_.hotReloadEnabled() && now - lastSourcePoll_ >= kSourcePollSeconds) {
+    if (state_.shaders.autoReload && gpu_->shaders.hotReloadEnabled() && now - lastSourcePoll_ >= kSourcePollSeconds) {
         lastSourcePoll_ = now;
-        const ReloadResult result = shaders_.reloadChanged();
+        const ReloadResult result = gpu_->shaders.reloadChanged();
         if (result.attempted())
             setNotice(result.failedTechniques.empty() ? "shaders reloaded after a file change" : "shader reload failed: see the error window",
                       !result.failedTechniques.empty());
@@ -279,24 +316,24 @@ void App::update() {
 void App::keepCameraAboveGround() {
     if (!state_.terrain.enabled || state_.terrain.cameraClearance <= 0.0f) return;
     const glm::dvec3 p = state_.camera.position;
-    const double lowest = renderer_.groundY(p.x, p.z) + state_.terrain.cameraClearance;
+    const double lowest = gpu_->renderer.groundY(p.x, p.z) + state_.terrain.cameraClearance;
     if (p.y < lowest) state_.camera.position.y = static_cast<float>(lowest);
 }
 
 // The GUI is built first (its edits apply to this frame), then the renderer draws the frame in
 // its order with the GUI as the last pass.
 void App::renderFrame(bool drawGui) {
-    ID3D11DeviceContext* context = device_.context();
-    const RendererStatus status = renderer_.status(state_);
+    ID3D11DeviceContext* context = gpu_->device.context();
+    const RendererStatus status = gpu_->renderer.status(state_);
     std::vector<std::string> devices = hidDevices_.connectedNames();
     for (int i = 0; i < xinputPads_.connectedCount(); ++i) devices.push_back("Xbox pad (XInput)");
-    const FrameTargets& targets = renderer_.targets();
+    const FrameTargets& targets = gpu_->renderer.targets();
     GuiModel model{state_,
-                   FrameStats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), targets.width(), targets.height(), device_.adapterName()},
-                   renderer_.profiler().timings(),
+                   FrameStats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), targets.width(), targets.height(), gpu_->device.adapterName()},
+                   gpu_->renderer.profiler().timings(),
                    frameTimes_,
-                   shaders_.errors(),
-                   shaders_.sourceCompiler() ? shaders_.sourceCompiler()->name() : std::string(),
+                   gpu_->shaders.errors(),
+                   gpu_->shaders.sourceCompiler() ? gpu_->shaders.sourceCompiler()->name() : std::string(),
                    std::move(devices),
                    notice_,
                    noticeIsError_,
@@ -304,25 +341,25 @@ void App::renderFrame(bool drawGui) {
                    status.atmosphereProgress,
                    status.cloudTableProgress,
                    status.cloudBlending};
-    const GuiRequests requests = overlay_->build(model);
-    const auto gui = [&](ID3D11RenderTargetView* output) { overlay_->render(context, output); };
-    renderer_.render(state_, FrameTime{timer_.totalSeconds(), timer_.deltaSeconds()}, options_.headless, outputTarget(),
+    const GuiRequests requests = gpu_->overlay->build(model);
+    const auto gui = [&](ID3D11RenderTargetView* output) { gpu_->overlay->render(context, output); };
+    gpu_->renderer.render(state_, FrameTime{timer_.totalSeconds(), timer_.deltaSeconds()}, options_.headless, outputTarget(),
                      drawGui ? std::function<void(ID3D11RenderTargetView*)>(gui) : nullptr);
     handleRequests(requests);
 }
 
 void App::captureFrame(const std::string& name) {
-    ID3D11Device* device = device_.device();
-    ID3D11DeviceContext* context = device_.context();
-    const FrameTargets& targets = renderer_.targets();
+    ID3D11Device* device = gpu_->device.device();
+    ID3D11DeviceContext* context = gpu_->device.context();
+    const FrameTargets& targets = gpu_->renderer.targets();
     CaptureDescription d;
     d.view = state_.camera.view();
     d.projection = state_.camera.projection(static_cast<float>(targets.width()) / static_cast<float>(targets.height()));
     d.directionToSun = state_.sun.direction();
     d.settings = stateToJson(state_).dump(2);
-    d.adapter = device_.describe();
+    d.adapter = gpu_->device.describe();
     d.frame = static_cast<int>(timer_.frameCount());
-    d.techniques = renderer_.captureAttributes(state_);
+    d.techniques = gpu_->renderer.captureAttributes(state_);
     writeCapture(options_.capturePng(name), options_.captureExr(name), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, targets.hdr().texture.Get()), d);
     log::info("captured " + options_.capturePng(name).string() + " and " + options_.captureExr(name).string());
@@ -331,12 +368,12 @@ void App::captureFrame(const std::string& name) {
 int App::runBenchmark(const BenchmarkPlan& plan) {
     ensureWritable(options_.benchmarkResults());
     log::info("benchmark '" + plan.name + "': " + std::to_string(plan.scenarios.size()) + " scenarios, " + std::to_string(plan.warmupFrames) +
-              " warm-up and " + std::to_string(plan.measuredFrames) + " measured frames each, on " + device_.describe());
+              " warm-up and " + std::to_string(plan.measuredFrames) + " measured frames each, on " + gpu_->device.describe());
     const auto scratch = std::filesystem::temp_directory_path() / ("firmament-benchmark-" + std::to_string(GetCurrentProcessId()));
-    const BenchmarkRun run = firmament::runBenchmark(renderer_, device_.context(), plan, scratch);
+    const BenchmarkRun run = firmament::runBenchmark(gpu_->renderer, gpu_->device.context(), plan, scratch);
     std::error_code ec;
     std::filesystem::remove_all(scratch, ec);
-    const BenchmarkInfo info{kFirmamentVersion, device_.describe(), options_.benchmark ? options_.benchmark->string() : std::string()};
+    const BenchmarkInfo info{kFirmamentVersion, gpu_->device.describe(), options_.benchmark ? options_.benchmark->string() : std::string()};
     const std::string text = benchmarkReport(plan, run.results, run.tables, info).dump(2) + "\n";
     writeFileText(options_.benchmarkResults(), text);
     std::fputs(benchmarkTable(plan, run.results, run.tables).c_str(), stdout);
@@ -346,13 +383,16 @@ int App::runBenchmark(const BenchmarkPlan& plan) {
 }
 
 void App::printTimings() {
-    GpuProfiler& profiler = renderer_.profiler();
+    GpuProfiler& profiler = gpu_->renderer.profiler();
     profiler.flush();
     std::printf("GPU time per pass over %llu frames at %dx%d on %s:\n", static_cast<unsigned long long>(timer_.frameCount()),
-                renderer_.targets().width(), renderer_.targets().height(), device_.describe().c_str());
+                gpu_->renderer.targets().width(), gpu_->renderer.targets().height(), gpu_->device.describe().c_str());
     std::printf("  %-24s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
     for (const PassTiming& t : profiler.timings())
         std::printf("  %-24s %10.3f %10.3f %10.3f\n", t.name.c_str(), t.meanMs, t.minMs, t.maxMs);
+    if (deviceLosses_ > 0)
+        std::printf("  (the device was lost %d time%s: these are the frames since it was last made again)\n", deviceLosses_,
+                    deviceLosses_ == 1 ? "" : "s");
     if (profiler.disjointFrames())
         std::printf("  (%llu frames had unreliable timestamps and were left out)\n", static_cast<unsigned long long>(profiler.disjointFrames()));
     std::fflush(stdout);

@@ -21,6 +21,23 @@
 
 namespace firmament {
 
+// Everything made on the Direct3D device, made in this order and destroyed in the reverse: the
+// device, the shader library, the swap chain (none when headless), the renderer with every
+// technique and its tables (loaded from the cache where they are there) and the GUI. After a
+// device loss (DXGI_ERROR_DEVICE_REMOVED or _RESET) the App destroys it and makes it again,
+// whole; what lives outside it (the settings and camera, the window, input, the flight and the
+// clock) is kept.
+struct DeviceResources {
+    DeviceResources(const Options& options, std::unique_ptr<ShaderCompiler> precompiled, const TableStorage& storage, HWND window,
+                    int width, int height);  // throws Error
+
+    Device device;
+    ShaderLibrary shaders;
+    std::unique_ptr<SwapChain> swapChain;  // null when headless
+    Renderer renderer;
+    std::unique_ptr<Overlay> overlay;
+};
+
 class App {
 public:
     // `flight`: a camera path to play back first (--flight).
@@ -45,16 +62,15 @@ private:
     void setNotice(std::string text, bool isError);
     ID3D11RenderTargetView* outputTarget() const;
     ID3D11Texture2D* outputTexture() const;
+    // Destroys every GPU resource and makes them again on a new device (`why`: the loss's name).
+    void recoverFromDeviceLoss(const std::string& why);
 
     Options options_;
     State state_;
-    std::unique_ptr<ShaderCompiler> shaderSource_;  // handed to shaders_ once the device exists
+    std::unique_ptr<ShaderCompiler> shaderSource_;  // opened before the window (a bad folder fails fast)
     std::unique_ptr<Window> window_;
-    Device device_;
-    std::unique_ptr<SwapChain> swapChain_;  // null when headless
-    ShaderLibrary shaders_;
-    Renderer renderer_;
-    std::unique_ptr<Overlay> overlay_;
+    std::unique_ptr<DeviceResources> gpu_;
+    int deviceLosses_ = 0;
 
     KeyboardMouse keyboardMouse_;
     HidDevices hidDevices_;

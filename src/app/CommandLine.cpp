@@ -94,6 +94,15 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
                 return result;
             }
             o.frames = static_cast<int>(*n);
+        } else if (flag == "--simulate-device-loss") {
+            const auto v = value();
+            if (!v) return result;
+            const auto n = parseInteger(*v);
+            if (!n || *n < 1 || *n > kMaxFrames) {
+                result.error = "--simulate-device-loss: '" + *v + "' is not a frame number from 1 to " + std::to_string(kMaxFrames);
+                return result;
+            }
+            o.simulateDeviceLoss = static_cast<int>(*n);
         } else if (flag == "--resolution") {
             const auto v = value();
             if (!v) return result;
@@ -219,6 +228,10 @@ Device
   --warp                 use the WARP software rasterizer
   --hardware             use the default hardware adapter (also when headless)
   --adapter N            use DXGI adapter N
+  --simulate-device-loss N
+                         after frame N, act as if Present had returned
+                         DXGI_ERROR_DEVICE_REMOVED: every GPU resource is made
+                         again; settings and camera are kept (a test of the path)
 Running
   --headless             no visible window; WARP unless --hardware or --adapter;
                          renders --frames frames (default 30), prints GPU times

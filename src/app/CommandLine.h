@@ -31,6 +31,7 @@ struct Options {
     std::optional<std::filesystem::path> exportLuts;    // write the atmosphere's tables here as EXR
     std::optional<std::filesystem::path> cacheDir;      // the atmosphere's table cache (default: per user)
     bool noCache = false;                               // compute the tables every run
+    std::optional<int> simulateDeviceLoss;              // after this frame (1-based), recover as from a removed device
     std::optional<std::filesystem::path> generateCloudScattering;  // compute the cloud particle's scattering table into this file and exit
     std::optional<std::filesystem::path> benchmark;     // a scenario file to run (implies headless)
     std::optional<std::filesystem::path> benchmarkOutput;  // the results' JSON (default benchmark-results.json)

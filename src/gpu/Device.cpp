@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "gpu/Hresult.h"
 
+#include <cstdio>
 #include <vector>
 
 namespace firmament {
@@ -62,6 +63,26 @@ Device::Device(const DeviceOptions& options) {
                                                     sizeof allowTearing)))
             tearingSupported_ = allowTearing == TRUE;
     }
+}
+
+std::string deviceLossName(HRESULT hr) {
+    switch (hr) {
+        case DXGI_ERROR_DEVICE_REMOVED: return "DXGI_ERROR_DEVICE_REMOVED";
+        case DXGI_ERROR_DEVICE_RESET: return "DXGI_ERROR_DEVICE_RESET";
+        case DXGI_ERROR_DEVICE_HUNG: return "DXGI_ERROR_DEVICE_HUNG";
+        case DXGI_ERROR_DRIVER_INTERNAL_ERROR: return "DXGI_ERROR_DRIVER_INTERNAL_ERROR";
+        case DXGI_ERROR_INVALID_CALL: return "DXGI_ERROR_INVALID_CALL";
+        default: {
+            char code[16];
+            std::snprintf(code, sizeof code, "0x%08lX", static_cast<unsigned long>(hr));
+            return code;
+        }
+    }
+}
+
+std::string Device::removedReason() const {
+    const HRESULT hr = device_->GetDeviceRemovedReason();
+    return hr == S_OK ? std::string() : deviceLossName(hr);
 }
 
 std::string Device::describe() const {

@@ -25,6 +25,9 @@ public:
     D3D_FEATURE_LEVEL featureLevel() const { return featureLevel_; }
     bool tearingSupported() const { return tearingSupported_; }
     std::string describe() const;  // "adapter (feature level 11_1)"
+    // Empty while the device works; after DXGI_ERROR_DEVICE_REMOVED, _RESET, _HUNG and the like,
+    // why (ID3D11Device::GetDeviceRemovedReason, named).
+    std::string removedReason() const;
 
 private:
     ComPtr<IDXGIFactory2> factory_;
@@ -36,5 +39,7 @@ private:
 };
 
 std::string featureLevelName(D3D_FEATURE_LEVEL level);
+// "DXGI_ERROR_DEVICE_REMOVED", ... for the HRESULTs that mean the device is gone; else the code in hex.
+std::string deviceLossName(HRESULT hr);
 
 }  // namespace firmament

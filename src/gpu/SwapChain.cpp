@@ -45,11 +45,13 @@ void SwapChain::resize(int width, int height) {
     createViews();
 }
 
-void SwapChain::present(bool vsync) {
+std::string SwapChain::present(bool vsync) {
     const UINT flags = (!vsync && tearing_) ? DXGI_PRESENT_ALLOW_TEARING : 0;
     const HRESULT hr = swapChain_->Present(vsync ? 1 : 0, flags);
-    if (hr == DXGI_STATUS_OCCLUDED) return;
+    if (hr == DXGI_STATUS_OCCLUDED) return {};
+    if (hr == DXGI_ERROR_DEVICE_REMOVED || hr == DXGI_ERROR_DEVICE_RESET) return deviceLossName(hr);
     check(hr, "IDXGISwapChain::Present");
+    return {};
 }
 
 }  // namespace firmament

@@ -13,7 +13,9 @@ public:
     SwapChain(const Device& device, HWND window, int width, int height);
 
     void resize(int width, int height);  // no-op for a zero size (minimized)
-    void present(bool vsync);
+    // Empty when presented (or occluded); the loss's name after DXGI_ERROR_DEVICE_REMOVED or
+    // _RESET, which the caller answers by making the device and everything on it again.
+    std::string present(bool vsync);
 
     ID3D11Texture2D* backBuffer() const { return backBuffer_.Get(); }
     ID3D11RenderTargetView* backBufferRtv() const { return rtv_.Get(); }

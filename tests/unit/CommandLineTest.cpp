@@ -80,13 +80,21 @@ TEST(CommandLine, BadInputNamesTheProblem) {
     expectError({"--set", "camera.fieldOfView"}, "section.key=value");
     expectError({"--settings", ""}, "the path is empty");
     expectError({"--capture-ui=yes"}, "takes no value");
+    expectError({"--simulate-device-loss", "0"}, "--simulate-device-loss: '0' is not a frame number");
+    expectError({"--simulate-device-loss", "soon"}, "is not a frame number");
+}
+
+TEST(CommandLine, SimulatedDeviceLossTakesAFrameNumber) {
+    EXPECT_FALSE(parse({}).options.simulateDeviceLoss.has_value());
+    EXPECT_EQ(parse({"--simulate-device-loss", "12"}).options.simulateDeviceLoss, 12);
+    EXPECT_EQ(parse({"--simulate-device-loss=3"}).options.simulateDeviceLoss, 3);
 }
 
 TEST(CommandLine, UsageListsEveryOption) {
     const std::string usage = usageText();
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
                                "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
-                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--version", "--help"})
+                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--simulate-device-loss", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 
