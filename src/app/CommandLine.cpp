@@ -60,6 +60,17 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             if (inlineValue) result.error = flag + " takes no value";
             return !inlineValue;
         };
+        // The flag's value as a frame from 1 to kMaxFrames; else the error, naming it as `what`.
+        auto frameValue = [&](const char* what) -> std::optional<int> {
+            const auto v = value();
+            if (!v) return std::nullopt;
+            const auto n = parseInteger(*v);
+            if (!n || *n < 1 || *n > kMaxFrames) {
+                result.error = flag + ": '" + *v + "' is not a " + what + " from 1 to " + std::to_string(kMaxFrames);
+                return std::nullopt;
+            }
+            return static_cast<int>(*n);
+        };
 
         if (flag == "--help" || flag == "-h" || flag == "/?") {
             if (!noValue()) return result;
@@ -86,23 +97,9 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             }
             o.adapter = static_cast<unsigned>(*n);
         } else if (flag == "--frames") {
-            const auto v = value();
-            if (!v) return result;
-            const auto n = parseInteger(*v);
-            if (!n || *n < 1 || *n > kMaxFrames) {
-                result.error = "--frames: '" + *v + "' is not a frame count from 1 to " + std::to_string(kMaxFrames);
-                return result;
-            }
-            o.frames = static_cast<int>(*n);
+            if (!(o.frames = frameValue("frame count"))) return result;
         } else if (flag == "--simulate-device-loss") {
-            const auto v = value();
-            if (!v) return result;
-            const auto n = parseInteger(*v);
-            if (!n || *n < 1 || *n > kMaxFrames) {
-                result.error = "--simulate-device-loss: '" + *v + "' is not a frame number from 1 to " + std::to_string(kMaxFrames);
-                return result;
-            }
-            o.simulateDeviceLoss = static_cast<int>(*n);
+            if (!(o.simulateDeviceLoss = frameValue("frame number"))) return result;
         } else if (flag == "--resolution") {
             const auto v = value();
             if (!v) return result;
