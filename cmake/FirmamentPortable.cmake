@@ -30,6 +30,8 @@ add_library(firmament_portable STATIC
     ${src}/app/BenchmarkReport.cpp
     ${src}/app/CommandLine.cpp
     ${src}/app/FlightPath.cpp
+    ${src}/app/SoakSchedule.cpp
+    ${src}/app/SoakVerdict.cpp
     ${src}/atmosphere/AtmosphereParameters.cpp
     ${src}/atmosphere/ReferenceAtmosphere.cpp
     ${src}/atmosphere/SunAnimation.cpp
@@ -89,6 +91,7 @@ add_executable(firmament_portable_tests
     ${tests}/unit/ReferenceAtmosphereTest.cpp
     ${tests}/unit/SettingsTest.cpp
     ${tests}/unit/ShaderKeyTest.cpp
+    ${tests}/unit/SoakScheduleTest.cpp
     ${tests}/unit/StepTimerTest.cpp
     ${tests}/unit/SunAnimationTest.cpp
     ${tests}/unit/TerrainGeneratorTest.cpp
@@ -98,9 +101,10 @@ add_executable(firmament_portable_tests
 target_include_directories(firmament_portable_tests PRIVATE ${tests})
 target_link_libraries(firmament_portable_tests PRIVATE firmament_portable GTest::gtest)
 firmament_warnings(firmament_portable_tests)
-# The shipped cloud scattering table, beside the executable as in the Windows build.
+# The shipped cloud scattering table and soak schedule, beside the executable as in the Windows build.
 add_custom_command(TARGET firmament_portable_tests POST_BUILD
-    COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/clouds $<TARGET_FILE_DIR:firmament_portable_tests>/media/clouds)
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/clouds $<TARGET_FILE_DIR:firmament_portable_tests>/media/clouds
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/soak $<TARGET_FILE_DIR:firmament_portable_tests>/media/soak)
 gtest_discover_tests(firmament_portable_tests TEST_PREFIX "portable." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
 
 if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")

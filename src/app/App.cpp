@@ -106,7 +106,7 @@ DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderC
     renderer.resize(width, height, !swapChain);
 }
 
-App::App(const Options& options, const State& state, std::optional<FlightPath> flight)
+App::App(const Options& options, const State& state, std::optional<FlightPath> flight, std::optional<SoakSchedule> soak)
     : options_(checkedOptions(options)),
       state_(state),
       shaderSource_(openShaderFolder(options_)),
@@ -118,6 +118,10 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
                                              options_.height)),
       flight_(std::move(flight)) {
     if (options_.recordFlight) ensureWritable(*options_.recordFlight);
+    if (soak) {
+        ensureWritable(options_.soakResults());
+        soak_.emplace(std::move(*soak));
+    }
     if (options_.headless) timer_.setFixedStep(1.0 / 60.0);  // every headless run sees the same times
 }
 
@@ -223,7 +227,7 @@ void App::handleRequests(const GuiRequests& requests) {
 
 int App::run() {
     // A headless flight renders its whole length (at the fixed 60 Hz step) unless --frames says otherwise.
-    const int frames = flight_ && options_.headless && !options_.frames
+    const int frames = flight_ && options_.headless && !options_.frames && !soak_
                            ? static_cast<int>(std::ceil(flight_->duration() * 60.0)) + 1
                            : options_.frameCount();
     if (flight_) log::info("playing " + flight_->describe());
@@ -238,6 +242,7 @@ int App::run() {
             gpu_->swapChain->resize(window_->clientWidth(), window_->clientHeight());
             gpu_->renderer.resize(gpu_->swapChain->width(), gpu_->swapChain->height(), false);
         }
+        if (soak_) soak_->beforeFrame(frame, state_);
         timer_.tick();
         update();
         const bool last = frames != 0 && frame + 1 == frames;
@@ -261,6 +266,7 @@ int App::run() {
         if (lost.empty() && options_.simulateDeviceLoss && frame + 1 == *options_.simulateDeviceLoss)
             lost = "DXGI_ERROR_DEVICE_REMOVED, simulated by --simulate-device-loss";
         if (!lost.empty()) recoverFromDeviceLoss(lost);
+        if (soak_) soak_->afterFrame(frame, gpu_->device);
     }
     if (options_.capture && frames == 0) {  // a windowed run closed by the person: capture the last frame
         renderFrame(options_.captureUi);
@@ -273,7 +279,7 @@ int App::run() {
         log::info(recording_.describe() + " written to " + options_.recordFlight->string());
     }
     printTimings();
-    return 0;
+    return soak_ ? soak_->finish(options_.soakResults()) : 0;
 }
 
 void App::update() {
@@ -294,13 +300,15 @@ void App::update() {
     if (flight_ && !flightDone_) {
         // The recorded path drives, and input waits for its end. The frame at or past the end shows
         // the last keyframe exactly: a one-keyframe flight is a still view.
-        const Bookmark view = flight_->at(now);
+        // A soak flies it in a loop.
+        const bool loop = soak_ && flight_->duration() > 0.0;
+        const Bookmark view = flight_->at(loop ? std::fmod(now, flight_->duration()) : now);
         state_.camera = view.camera;
         state_.sun = view.sun;
-        flightDone_ = now >= flight_->duration();
+        flightDone_ = !loop && now >= flight_->duration();
         // (A microsecond's tolerance: the fixed steps add up to a keyframe's time only to rounding.)
         constexpr double kTolerance = 1e-6;
-        dueCaptures_ = flight_->capturesBetween(flightShown_ + kTolerance, now + kTolerance);
+        if (!loop) dueCaptures_ = flight_->capturesBetween(flightShown_ + kTolerance, now + kTolerance);
         flightShown_ = now;
     } else {
         fly(state_.camera, state_.sun, state_.flight, input, dt);

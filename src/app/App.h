@@ -4,6 +4,7 @@
 #include "app/BenchmarkPlan.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
+#include "app/SoakRun.h"
 #include "app/StepTimer.h"
 #include "app/Window.h"
 #include "gpu/Device.h"
@@ -40,8 +41,10 @@ struct DeviceResources {
 
 class App {
 public:
-    // `flight`: a camera path to play back first (--flight).
-    App(const Options& options, const State& state, std::optional<FlightPath> flight);  // throws Error
+    // `flight`: a camera path to play back first (--flight); `soak`: the schedule of a soak run
+    // (--soak), which plays the flight in a loop.
+    App(const Options& options, const State& state, std::optional<FlightPath> flight,
+        std::optional<SoakSchedule> soak = std::nullopt);  // throws Error
     int run();                                         // returns the exit code
     // --benchmark: runs the plan's scenarios, prints the table, writes the JSON; the exit code.
     int runBenchmark(const BenchmarkPlan& plan);
@@ -80,6 +83,7 @@ private:
     bool flightDone_ = false;  // the flight's last keyframe has been shown
     double flightShown_ = -1.0;  // the flight's time the last frame showed (-1 before the first)
     std::vector<std::string> dueCaptures_;  // this frame's flight captures
+    std::optional<SoakRun> soak_;
     FlightPath recording_;
     StepTimer timer_;
     FrameTimeHistory frameTimes_;

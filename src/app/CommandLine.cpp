@@ -152,7 +152,7 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             o.noCache = true;
         } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file" || flag == "--flight" ||
                    flag == "--record-flight" || flag == "--export-luts" || flag == "--cache-dir" || flag == "--benchmark" ||
-                   flag == "--benchmark-output" || flag == "--generate-cloud-scattering") {
+                   flag == "--benchmark-output" || flag == "--generate-cloud-scattering" || flag == "--soak" || flag == "--soak-report") {
             const auto v = value();
             if (!v) return result;
             if (v->empty()) {
@@ -168,6 +168,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             else if (flag == "--benchmark") o.benchmark = std::filesystem::path(*v);
             else if (flag == "--benchmark-output") o.benchmarkOutput = std::filesystem::path(*v);
             else if (flag == "--generate-cloud-scattering") o.generateCloudScattering = std::filesystem::path(*v);
+            else if (flag == "--soak") o.soak = std::filesystem::path(*v);
+            else if (flag == "--soak-report") o.soakReport = std::filesystem::path(*v);
             else o.stateFile = std::filesystem::path(*v);
         } else if (flag == "--set") {
             const auto v = value();
@@ -201,6 +203,14 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
         o.headless = true;  // a benchmark runs unattended
     } else if (o.benchmarkOutput) {
         result.error = "--benchmark-output needs --benchmark";
+        return result;
+    }
+    if (o.soak && o.benchmark) {
+        result.error = "--soak and --benchmark exclude each other";
+        return result;
+    }
+    if (o.soakReport && !o.soak) {
+        result.error = "--soak-report needs --soak";
         return result;
     }
     if (hardwareRequested && warpRequested) {
@@ -252,6 +262,13 @@ Benchmark
                          headless, print a table of GPU times per pass and write
                          them as JSON (docs/performance.md)
   --benchmark-output F   where the JSON goes (default benchmark-results.json)
+Soak (docs/reliability.md)
+  --soak FILE            apply the schedule file's settings changes in a loop, play
+                         --flight in a loop, sample the live Direct3D objects, handles
+                         and private memory at the end of every loop, and fail (exit 1)
+                         on growth after the warm-up beyond the file's bounds;
+                         --frames defaults to 10000
+  --soak-report FILE     where the samples and verdict go (default soak-report.json)
 Atmosphere
   --export-luts DIR      write every look-up table as a self-describing EXR into DIR
                          once computed (or loaded)

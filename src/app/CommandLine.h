@@ -35,14 +35,18 @@ struct Options {
     std::optional<std::filesystem::path> generateCloudScattering;  // compute the cloud particle's scattering table into this file and exit
     std::optional<std::filesystem::path> benchmark;     // a scenario file to run (implies headless)
     std::optional<std::filesystem::path> benchmarkOutput;  // the results' JSON (default benchmark-results.json)
+    std::optional<std::filesystem::path> soak;        // a soak schedule (tools/soak)
+    std::optional<std::filesystem::path> soakReport;  // the soak's samples and verdict (default soak-report.json)
     bool help = false;
     bool version = false;
 
-    int frameCount() const { return frames.value_or(headless ? 30 : 0); }  // 0: until closed
+    // 0: until closed. A soak's default is the length tools/soak runs.
+    int frameCount() const { return frames.value_or(soak ? 10000 : headless ? 30 : 0); }
     // The capture's files; with `name` (a flight keyframe's capture), PATH-name.png and .exr.
     std::filesystem::path capturePng(const std::string& name = {}) const;
     std::filesystem::path captureExr(const std::string& name = {}) const;
     std::filesystem::path benchmarkResults() const { return benchmarkOutput.value_or("benchmark-results.json"); }
+    std::filesystem::path soakResults() const { return soakReport.value_or("soak-report.json"); }
 };
 
 struct ParsedCommandLine {

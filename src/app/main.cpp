@@ -4,6 +4,7 @@
 #include "app/BenchmarkPlan.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
+#include "app/SoakSchedule.h"
 #include "clouds/ParticleScattering.h"
 #include "settings/State.h"
 #include "core/Error.h"
@@ -64,18 +65,26 @@ int main() {
     State state;
     std::optional<FlightPath> flight;
     std::optional<BenchmarkPlan> benchmark;
+    std::optional<SoakSchedule> soak;
     try {
         if (parsed.options.flight) flight = FlightPath::load(*parsed.options.flight);
         if (parsed.options.settingsFile) loadStateFile(state, *parsed.options.settingsFile);
         if (parsed.options.vsync) state.display.vsync = *parsed.options.vsync;
         applyAssignments(state, parsed.options.assignments);
         if (parsed.options.benchmark) benchmark = loadBenchmarkPlan(*parsed.options.benchmark, state);
+        if (parsed.options.soak) {
+            soak = SoakSchedule::load(*parsed.options.soak);
+            if (parsed.options.frameCount() == 0 || parsed.options.frameCount() < soak->framesNeeded())
+                throw Error("--soak " + parsed.options.soak->string() + ": the schedule needs at least " + std::to_string(soak->framesNeeded()) +
+                            " frames (" + std::to_string(soak->samplesNeeded()) + " loops of " + std::to_string(soak->loopFrames) +
+                            "), and --frames is " + std::to_string(parsed.options.frameCount()));
+        }
     } catch (const Error& e) {  // bad settings are bad input, like a bad command line
         log::error(e.what());
         return 2;
     }
     try {
-        App app(parsed.options, state, std::move(flight));
+        App app(parsed.options, state, std::move(flight), std::move(soak));
         return benchmark ? app.runBenchmark(*benchmark) : app.run();
     } catch (const Error& e) {
         log::error(e.what());

@@ -1,6 +1,7 @@
 #include "gpu/Device.h"
 
 #include "core/Error.h"
+#include "gpu/CountingDevice.h"
 #include "gpu/Hresult.h"
 
 #include <cstdio>
@@ -42,15 +43,17 @@ Device::Device(const DeviceOptions& options) {
     if (options.debugLayer) flags |= D3D11_CREATE_DEVICE_DEBUG;
     const D3D_FEATURE_LEVEL levels[] = {D3D_FEATURE_LEVEL_11_1, D3D_FEATURE_LEVEL_11_0};
     HRESULT hr = D3D11CreateDevice(adapter.Get(), driverType, nullptr, flags, levels, 2, D3D11_SDK_VERSION,
-                                   &device_, &featureLevel_, &context_);
+                                   &driver_, &featureLevel_, &context_);
     if (hr == E_INVALIDARG)  // runtimes that do not know 11_1
         hr = D3D11CreateDevice(adapter.Get(), driverType, nullptr, flags, levels + 1, 1, D3D11_SDK_VERSION,
-                               &device_, &featureLevel_, &context_);
+                               &driver_, &featureLevel_, &context_);
     check(hr, options.driver == DriverType::Warp ? "D3D11CreateDevice (WARP)" : "D3D11CreateDevice");
+
+    device_.Attach(new CountingDevice(driver_.Get(), liveObjects_));
 
     ComPtr<IDXGIDevice> dxgiDevice;
     ComPtr<IDXGIAdapter> deviceAdapter;
-    if (SUCCEEDED(device_.As(&dxgiDevice)) && SUCCEEDED(dxgiDevice->GetAdapter(&deviceAdapter))) {
+    if (SUCCEEDED(driver_.As(&dxgiDevice)) && SUCCEEDED(dxgiDevice->GetAdapter(&deviceAdapter))) {
         DXGI_ADAPTER_DESC desc{};
         deviceAdapter->GetDesc(&desc);
         adapterName_ = narrow(desc.Description);
@@ -83,6 +86,18 @@ std::string deviceLossName(HRESULT hr) {
 std::string Device::removedReason() const {
     const HRESULT hr = device_->GetDeviceRemovedReason();
     return hr == S_OK ? std::string() : deviceLossName(hr);
+}
+
+LiveObjectCounts Device::liveObjects() const {
+    // An event query made on the driver's device, so that it is not counted itself.
+    D3D11_QUERY_DESC desc{D3D11_QUERY_EVENT, 0};
+    ComPtr<ID3D11Query> finished;
+    check(driver_->CreateQuery(&desc, &finished), "CreateQuery (event)");
+    context_->End(finished.Get());
+    context_->Flush();
+    BOOL signalled = FALSE;
+    while (context_->GetData(finished.Get(), &signalled, sizeof signalled, 0) != S_OK) Sleep(1);
+    return liveObjects_.counts();
 }
 
 std::string Device::describe() const {

@@ -17,7 +17,7 @@ SwapChain::SwapChain(const Device& device, HWND window, int width, int height)
     desc.SwapEffect = DXGI_SWAP_EFFECT_FLIP_DISCARD;
     desc.AlphaMode = DXGI_ALPHA_MODE_IGNORE;
     desc.Flags = tearing_ ? DXGI_SWAP_CHAIN_FLAG_ALLOW_TEARING : 0;
-    check(device.factory()->CreateSwapChainForHwnd(device_, window, &desc, nullptr, nullptr, &swapChain_),
+    check(device.factory()->CreateSwapChainForHwnd(device.driverDevice(), window, &desc, nullptr, nullptr, &swapChain_),
           "CreateSwapChainForHwnd");
     // Alt+Enter is the window's own borderless full screen (Window::toggleFullScreen).
     device.factory()->MakeWindowAssociation(window, DXGI_MWA_NO_ALT_ENTER);

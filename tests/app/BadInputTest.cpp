@@ -73,6 +73,18 @@ TEST(BadInput, ShaderCompilerAndSourceFolder) {
                   "--shader-source: 'no-such-hlsl' is not a folder");
 }
 
+TEST(BadInput, SoakSchedules) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-bad-soak";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "step.json") << R"({"loopFrames": 10, "steps": [{"frame": 3, "set": ["clouds.enabled=maybe"]}]})";
+    expectFailure({L"--headless", L"--soak", (folder / "step.json").wstring()}, 2, "step.json: steps[0].set: clouds.enabled=maybe: clouds.enabled: expected on or off");
+    std::ofstream(folder / "short.json") << R"({"loopFrames": 10, "warmupLoops": 2})";
+    expectFailure({L"--headless", L"--frames", L"20", L"--soak", (folder / "short.json").wstring()}, 2,
+                  "the schedule needs at least 30 frames (3 loops of 10), and --frames is 20");
+    expectFailure({L"--headless", L"--soak-report", L"r.json"}, 2, "--soak-report needs --soak");
+    std::filesystem::remove_all(folder);
+}
+
 TEST(GoodInput, HelpAndVersionExitWithZero) {
     const ProcessResult help = runProcess(firmamentExe(), {L"--help"});
     EXPECT_EQ(help.exitCode, 0u);

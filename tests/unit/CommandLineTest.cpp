@@ -137,5 +137,19 @@ TEST(CommandLine, BenchmarkOptions) {
     expectError({"--benchmark", ""}, "empty");
 }
 
+TEST(CommandLine, SoakOptions) {
+    const ParsedCommandLine p = parse({"--headless", "--soak", "media/soak/schedule.json", "--soak-report", "out/soak.json"});
+    ASSERT_TRUE(p.error.empty()) << p.error;
+    EXPECT_EQ(p.options.soak, std::filesystem::path("media/soak/schedule.json"));
+    EXPECT_EQ(p.options.soakResults(), std::filesystem::path("out/soak.json"));
+    EXPECT_EQ(p.options.frameCount(), 10000);  // a soak's default length, headless or not
+    EXPECT_EQ(parse({"--soak", "s.json"}).options.frameCount(), 10000);
+    EXPECT_EQ(parse({"--soak", "s.json", "--frames", "1000"}).options.frameCount(), 1000);
+    EXPECT_EQ(parse({"--soak", "s.json"}).options.soakResults(), std::filesystem::path("soak-report.json"));
+    expectError({"--soak-report", "r.json"}, "--soak-report needs --soak");
+    expectError({"--soak", "s.json", "--benchmark", "b.json"}, "--soak and --benchmark exclude each other");
+    expectError({"--soak", ""}, "--soak: the path is empty");
+}
+
 }  // namespace
 }  // namespace firmament

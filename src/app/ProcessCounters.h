@@ -1,0 +1,21 @@
+#pragma once
+// What the process holds of the system's resources, for the soak run.
+//
+// - Private bytes: PROCESS_MEMORY_COUNTERS::PagefileUsage, the commit charge (the memory
+//   committed for this process alone) on Windows; under Wine, the Linux process's anonymous
+//   resident memory and swap (Wine leaves PrivateUsage at 0).
+// - Handles: GetProcessHandleCount; where it says 0 (Wine's is a stub), the entries of the
+//   system's handle table that belong to this process (NtQuerySystemInformation,
+//   SystemHandleInformation), which Wine's server keeps.
+#include <cstdint>
+
+namespace firmament {
+
+struct ProcessCounters {
+    std::uint64_t privateBytes = 0;
+    long handles = 0;
+};
+
+ProcessCounters sampleProcessCounters();  // throws Error when the system cannot say
+
+}  // namespace firmament
