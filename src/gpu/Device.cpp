@@ -96,7 +96,8 @@ LiveObjectCounts Device::liveObjects() const {
     context_->End(finished.Get());
     context_->Flush();
     BOOL signalled = FALSE;
-    while (context_->GetData(finished.Get(), &signalled, sizeof signalled, 0) != S_OK) Sleep(1);
+    // S_FALSE while the GPU works; a removed device answers with its error, and waits no more.
+    while (context_->GetData(finished.Get(), &signalled, sizeof signalled, 0) == S_FALSE) Sleep(1);
     return liveObjects_.counts();
 }
 

@@ -18,7 +18,8 @@ void waitForGpu(ID3D11DeviceContext* context) {
     check(device->CreateQuery(&desc, &finished), "CreateQuery (event)");
     context->End(finished.Get());
     BOOL signalled = FALSE;
-    while (context->GetData(finished.Get(), &signalled, sizeof(signalled), 0) != S_OK) Sleep(1);
+    // S_FALSE while the GPU works; a removed device answers with its error, and waits no more.
+    while (context->GetData(finished.Get(), &signalled, sizeof(signalled), 0) == S_FALSE) Sleep(1);
 }
 
 void runAllUnits(ID3D11DeviceContext* context, const std::string& logPrefix, const UnitsOfWork& work) {
