@@ -26,8 +26,11 @@ TEST(Soak, AThousandFramesOfEveryToggleAndModeGrowNothing) {
                                                           (media / "flights" / "demo.json").wstring()});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("soak: passed"), std::string::npos) << run.output;
-    std::ifstream in(folder / "report.json");
-    const nlohmann::json report = nlohmann::json::parse(in);
+    nlohmann::json report;
+    {
+        std::ifstream in(folder / "report.json");  // closed before the folder is removed (Windows)
+        report = nlohmann::json::parse(in);
+    }
     ASSERT_EQ(report["samples"].size(), 4u);  // at frames 240, 480, 720 and 960
     EXPECT_EQ(report["passed"], true);
     for (const nlohmann::json& sample : report["samples"]) {
