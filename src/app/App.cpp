@@ -2,6 +2,7 @@
 
 #include "app/BenchmarkRunner.h"
 #include "app/Capture.h"
+#include "app/ProcessCounters.h"
 #include "atmosphere/SunAnimation.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
@@ -11,10 +12,12 @@
 #include "gpu/SourceShaderCompilers.h"
 #include "FirmamentVersion.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 namespace firmament {
 
@@ -122,7 +125,9 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
         ensureWritable(options_.soakResults());
         soak_.emplace(std::move(*soak));
     }
-    if (options_.headless) timer_.setFixedStep(1.0 / 60.0);  // every headless run sees the same times
+    // Every headless run sees the same times; --time-step gives a window (or a headless run) its own step.
+    if (options_.timeStep) timer_.setFixedStep(*options_.timeStep);
+    else if (options_.headless) timer_.setFixedStep(1.0 / 60.0);
 }
 
 void App::recoverFromDeviceLoss(const std::string& why) {
@@ -179,6 +184,7 @@ void App::onKey(WPARAM key) {
         case VK_F5: saveState(); break;
         case VK_F8: reloadShaders(); break;
         case VK_F9: loadState(); break;
+        case VK_F12: shotRequested_ = true; break;
         case VK_ESCAPE: window_->close(); break;
         default: break;
     }
@@ -234,28 +240,27 @@ int App::run() {
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         if (!window_->processMessages()) break;
         if (window_->minimized()) {
-            WaitMessage();  // nothing to draw: sleep until the window comes back
+            sleepWhileMinimized();
             --frame;
             continue;
         }
-        if (gpu_->swapChain && (window_->clientWidth() != gpu_->renderer.targets().width() || window_->clientHeight() != gpu_->renderer.targets().height())) {
-            gpu_->swapChain->resize(window_->clientWidth(), window_->clientHeight());
-            gpu_->renderer.resize(gpu_->swapChain->width(), gpu_->swapChain->height(), false);
-        }
+        followWindowSize();
         if (soak_) soak_->beforeFrame(frame, state_);
         timer_.tick();
         update();
         const bool last = frames != 0 && frame + 1 == frames;
         const bool capture = last && options_.capture;
         const bool flightCapture = options_.capture && !dueCaptures_.empty();
+        const bool shot = std::exchange(shotRequested_, false);
         // A device lost mid-frame makes some call fail (an Error); one lost by the time of
         // Present says so there. Headless frames have no Present: the device is asked.
         std::string lost;
         try {
-            renderFrame((!capture && !flightCapture) || options_.captureUi);
+            renderFrame((!capture && !flightCapture && !shot) || options_.captureUi);
             if (options_.capture)
                 for (const std::string& name : dueCaptures_) captureFrame(name);
             if (capture) captureFrame();
+            if (shot) captureShot();
             if (gpu_->swapChain) lost = gpu_->swapChain->present(state_.display.vsync);
         } catch (const Error& e) {
             lost = gpu_->device.removedReason();
@@ -280,6 +285,34 @@ int App::run() {
     }
     printTimings();
     return soak_ ? soak_->finish(options_.soakResults()) : 0;
+}
+
+void App::sleepWhileMinimized() {
+    gpu_->device.waitForGpu();  // the last frame's work is done before the minimized time is counted
+    const auto start = std::chrono::steady_clock::now();
+    const double cpuAtStart = processCpuSeconds();
+    log::info("window minimized after frame " + std::to_string(timer_.frameCount()) + ": drawing nothing until it is restored");
+    // Nothing is drawn: the thread sleeps until a message comes, and again after each one that
+    // leaves the window minimized (the messages first: a restore is one of them).
+    while (window_->processMessages() && window_->minimized()) WaitMessage();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu = processCpuSeconds() - cpuAtStart;
+    char text[96];
+    if (cpuAtStart >= 0.0) std::snprintf(text, sizeof text, "%.1f s minimized, using %.2f s of CPU time", seconds, cpu);
+    else std::snprintf(text, sizeof text, "%.1f s minimized (the system did not say how much CPU time it used)", seconds);
+    log::info("window restored after " + std::string(text) + "; frame " + std::to_string(timer_.frameCount() + 1) + " is next");
+}
+
+void App::followWindowSize() {
+    if (!gpu_->swapChain) return;
+    if (window_->clientWidth() <= 0 || window_->clientHeight() <= 0) return;  // no area: the last size stays
+    const int width = std::clamp(window_->clientWidth(), kMinFrameSide, kMaxFrameSide);
+    const int height = std::clamp(window_->clientHeight(), kMinFrameSide, kMaxFrameSide);
+    if (width == gpu_->renderer.targets().width() && height == gpu_->renderer.targets().height()) return;
+    gpu_->swapChain->resize(width, height);
+    gpu_->renderer.resize(width, height, false);
+    log::info("window: " + std::to_string(window_->clientWidth()) + "x" + std::to_string(window_->clientHeight()) + ", frames at " +
+              std::to_string(width) + "x" + std::to_string(height));
 }
 
 void App::update() {
@@ -371,6 +404,18 @@ void App::captureFrame(const std::string& name) {
     writeCapture(options_.capturePng(name), options_.captureExr(name), readTexture2D(device, context, outputTexture()),
                  readTexture2D(device, context, targets.hdr().texture.Get()), d);
     log::info("captured " + options_.capturePng(name).string() + " and " + options_.captureExr(name).string());
+}
+
+void App::captureShot() {
+    const std::string name = "shot-" + std::to_string(shotsTaken_ + 1);
+    try {
+        captureFrame(name);
+        ++shotsTaken_;
+        setNotice("captured " + options_.capturePng(name).string(), false);
+    } catch (const Error& e) {
+        setNotice(e.what(), true);
+        log::error(e.what());
+    }
 }
 
 int App::runBenchmark(const BenchmarkPlan& plan) {

@@ -54,6 +54,13 @@ private:
     void renderFrame(bool drawGui);
     // The frame into --capture's files, or with `name` (a flight keyframe's) into PATH-name's.
     void captureFrame(const std::string& name = {});
+    // F12: the frame into PATH-shot-N's files (firmament-shot-N without --capture); a failure is
+    // a notice and the program goes on.
+    void captureShot();
+    // Waits, drawing nothing, while the window is minimized; logs how long.
+    void sleepWhileMinimized();
+    // The swap chain and the renderer's targets follow the window's client area (at least 16 a side).
+    void followWindowSize();
     void keepCameraAboveGround();
     void printTimings();
     void onKey(WPARAM key);
@@ -83,6 +90,8 @@ private:
     bool flightDone_ = false;  // the flight's last keyframe has been shown
     double flightShown_ = -1.0;  // the flight's time the last frame showed (-1 before the first)
     std::vector<std::string> dueCaptures_;  // this frame's flight captures
+    bool shotRequested_ = false;            // F12 was pressed: capture the next frame
+    int shotsTaken_ = 0;
     std::optional<SoakRun> soak_;
     FlightPath recording_;
     StepTimer timer_;

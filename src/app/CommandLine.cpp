@@ -8,8 +8,6 @@ namespace firmament {
 
 namespace {
 
-constexpr int kMinSize = 16;
-constexpr int kMaxSize = 16384;
 constexpr int kMaxFrames = 10'000'000;
 
 std::optional<long long> parseInteger(const std::string& text) {
@@ -34,9 +32,13 @@ std::filesystem::path captureNamed(const std::filesystem::path& capture, const s
 }
 }  // namespace
 
-std::filesystem::path Options::capturePng(const std::string& name) const { return captureNamed(*capture, name, ".png"); }
+std::filesystem::path Options::capturePng(const std::string& name) const {
+    return captureNamed(capture.value_or("firmament.png"), name, ".png");
+}
 
-std::filesystem::path Options::captureExr(const std::string& name) const { return captureNamed(*capture, name, ".exr"); }
+std::filesystem::path Options::captureExr(const std::string& name) const {
+    return captureNamed(capture.value_or("firmament.png"), name, ".exr");
+}
 
 ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
     ParsedCommandLine result;
@@ -98,6 +100,16 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             o.adapter = static_cast<unsigned>(*n);
         } else if (flag == "--frames") {
             if (!(o.frames = frameValue("frame count"))) return result;
+        } else if (flag == "--time-step") {
+            const auto v = value();
+            if (!v) return result;
+            double seconds = -1.0;
+            const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), seconds);
+            if (ec != std::errc() || end != v->data() + v->size() || !(seconds >= 0.0 && seconds <= 1.0)) {
+                result.error = "--time-step: '" + *v + "' is not a number of seconds from 0 to 1";
+                return result;
+            }
+            o.timeStep = seconds;
         } else if (flag == "--simulate-device-loss") {
             if (!(o.simulateDeviceLoss = frameValue("frame number"))) return result;
         } else if (flag == "--resolution") {
@@ -110,9 +122,9 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
                 result.error = "--resolution: '" + *v + "' is not WIDTHxHEIGHT (for example 1280x720)";
                 return result;
             }
-            if (*w < kMinSize || *h < kMinSize || *w > kMaxSize || *h > kMaxSize) {
-                result.error = "--resolution: " + *v + " is out of range (each side " + std::to_string(kMinSize) +
-                               " to " + std::to_string(kMaxSize) + ")";
+            if (*w < kMinFrameSide || *h < kMinFrameSide || *w > kMaxFrameSide || *h > kMaxFrameSide) {
+                result.error = "--resolution: " + *v + " is out of range (each side " + std::to_string(kMinFrameSide) +
+                               " to " + std::to_string(kMaxFrameSide) + ")";
                 return result;
             }
             o.width = static_cast<int>(*w);
@@ -240,6 +252,8 @@ Device
                          DXGI_ERROR_DEVICE_REMOVED: every GPU resource is made
                          again; settings and camera are kept (a test of the path)
 Running
+  --time-step SECONDS    each frame advances the clock by exactly this (headless
+                         default 1/60); 0 holds the clouds and the sun still
   --headless             no visible window; WARP unless --hardware or --adapter;
                          renders --frames frames (default 30), prints GPU times
   --frames N             stop after N frames
@@ -248,6 +262,8 @@ Running
   --capture PATH         after the last frame write PATH.png (display) and
                          PATH.exr (HDR, half float, with the settings in its header)
   --capture-ui           include the GUI in the capture (left out by default)
+                         (F12 captures PATH-shot-N.png and .exr, or without
+                         --capture firmament-shot-N.png in the working folder)
 Settings
   --settings FILE        load settings, camera and sun from a JSON state file
   --set SECTION.KEY=VAL  change one setting (repeatable, after --settings);

@@ -10,6 +10,11 @@
 
 namespace firmament {
 
+// The frame's size: --resolution's range, and what a window's client area is drawn at (a window
+// smaller than 16 pixels a side is drawn at 16 and stretched by the swap chain).
+inline constexpr int kMinFrameSide = 16;
+inline constexpr int kMaxFrameSide = 16384;
+
 struct Options {
     bool headless = false;         // no visible window; WARP unless --hardware or --adapter
     DriverType driver = DriverType::Hardware;
@@ -18,7 +23,7 @@ struct Options {
     int width = 1280;
     int height = 720;
     std::optional<bool> vsync;     // overrides display.vsync
-    std::optional<std::filesystem::path> capture;  // PNG path; the EXR goes beside it
+    std::optional<std::filesystem::path> capture;  // PNG path; the EXR goes beside it (F12's shots too)
     bool captureUi = false;        // the GUI is left out of captures unless asked for
     std::optional<std::filesystem::path> shaderDir;
     std::optional<std::filesystem::path> shaderSource;  // HLSL folder for hot reload
@@ -31,6 +36,9 @@ struct Options {
     std::optional<std::filesystem::path> exportLuts;    // write the atmosphere's tables here as EXR
     std::optional<std::filesystem::path> cacheDir;      // the atmosphere's table cache (default: per user)
     bool noCache = false;                               // compute the tables every run
+    // Every frame advances the clock by exactly this (seconds; headless runs: 1/60). 0 stops it:
+    // the clouds' wind and the sun hold still, so a window's frames match a headless capture.
+    std::optional<double> timeStep;
     std::optional<int> simulateDeviceLoss;              // after this frame (1-based), recover as from a removed device
     std::optional<std::filesystem::path> generateCloudScattering;  // compute the cloud particle's scattering table into this file and exit
     std::optional<std::filesystem::path> benchmark;     // a scenario file to run (implies headless)
@@ -42,7 +50,8 @@ struct Options {
 
     // 0: until closed. A soak's default is the length tools/soak runs.
     int frameCount() const { return frames.value_or(soak ? 10000 : headless ? 30 : 0); }
-    // The capture's files; with `name` (a flight keyframe's capture), PATH-name.png and .exr.
+    // The capture's files; with `name` (a flight keyframe's capture, F12's "shot-N"), PATH-name.png
+    // and .exr. Without --capture, F12's shots go to firmament-shot-N.png in the current folder.
     std::filesystem::path capturePng(const std::string& name = {}) const;
     std::filesystem::path captureExr(const std::string& name = {}) const;
     std::filesystem::path benchmarkResults() const { return benchmarkOutput.value_or("benchmark-results.json"); }

@@ -52,6 +52,15 @@ long handlesInTheSystemTable() {
 
 }  // namespace
 
+double processCpuSeconds() {
+    FILETIME created{}, exited{}, kernel{}, user{};
+    if (!GetProcessTimes(GetCurrentProcess(), &created, &exited, &kernel, &user)) return -1.0;
+    const auto seconds = [](const FILETIME& t) {
+        return static_cast<double>((static_cast<unsigned long long>(t.dwHighDateTime) << 32) | t.dwLowDateTime) * 1e-7;
+    };
+    return seconds(kernel) + seconds(user);
+}
+
 ProcessCounters sampleProcessCounters() {
     ProcessCounters c;
     PROCESS_MEMORY_COUNTERS memory{};

@@ -18,4 +18,9 @@ struct ProcessCounters {
 
 ProcessCounters sampleProcessCounters();  // throws Error when the system cannot say
 
+// The CPU time this process has used so far, user and kernel, every thread, in seconds
+// (GetProcessTimes; Wine answers for its own process from times(2)). On a CPU device this is the
+// GPU's work too. -1 when the system cannot say.
+double processCpuSeconds();
+
 }  // namespace firmament

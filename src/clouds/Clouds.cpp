@@ -197,37 +197,41 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     // The passes are timed one after another, none inside another.
     std::optional<GpuProfiler::Scope> pass;
     pass.emplace(frame.profiler, "Clouds: shading");
-    blending_.begin(frame.device, context, blending, width, height);
-    c.blending = glm::uvec4(blending_.nodeCapacity(), static_cast<unsigned>(height), 0u, 0u);
-    c.target = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
-    shadingConstants_.update(context, c);
-    blending_.bindForParticles(context, target, blend);
-    context->OMSetDepthStencilState(nullptr, 0);
-    context->RSSetState(noCulling_.Get());
-    const ScatteringLookup* y = atmosphere.yusov;
-    const BrunetonLookup* b = atmosphere.bruneton;
-    ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere, shadingConstants_.get(), bruneton ? b->bruneton : nullptr};
-    context->PSSetConstantBuffers(2, 3, buffers);
-    ID3D11ShaderResourceView* extra[8] = {tables.opticalDepth.srv.Get(), depth, scattering.srv.Get()};
-    if (bruneton) {
-        extra[3] = b->transmittance;
-        extra[4] = b->irradiance;
-        extra[5] = b->inscatter;
-    } else {
-        extra[3] = y->netDensity;
-        extra[4] = y->singleScattering;
-        extra[5] = y->highOrderScattering;
-        extra[6] = y->multipleScattering;
-        extra[7] = y->ambientLight;
-    }
-    context->PSSetShaderResources(2, 8, extra);
-    ID3D11ShaderResourceView* sunTransmittance = opacity_.sunTransmittance();
-    context->PSSetShaderResources(10, 1, &sunTransmittance);
-    ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
-    context->PSSetSamplers(0, 2, samplers);
-    particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), width, height);
-    ID3D11ShaderResourceView* none[9] = {};
-    context->PSSetShaderResources(2, 9, none);
+    // The first per-pixel lists of a new pool (at start, at a new size) that did not fit it are
+    // drawn again into a larger one, so that no frame after a resize loses fragments.
+    do {
+        blending_.begin(frame.device, context, blending, width, height);
+        c.blending = glm::uvec4(blending_.nodeCapacity(), static_cast<unsigned>(height), 0u, 0u);
+        c.target = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
+        shadingConstants_.update(context, c);
+        blending_.bindForParticles(context, target, blend);
+        context->OMSetDepthStencilState(nullptr, 0);
+        context->RSSetState(noCulling_.Get());
+        const ScatteringLookup* y = atmosphere.yusov;
+        const BrunetonLookup* b = atmosphere.bruneton;
+        ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere, shadingConstants_.get(), bruneton ? b->bruneton : nullptr};
+        context->PSSetConstantBuffers(2, 3, buffers);
+        ID3D11ShaderResourceView* extra[8] = {tables.opticalDepth.srv.Get(), depth, scattering.srv.Get()};
+        if (bruneton) {
+            extra[3] = b->transmittance;
+            extra[4] = b->irradiance;
+            extra[5] = b->inscatter;
+        } else {
+            extra[3] = y->netDensity;
+            extra[4] = y->singleScattering;
+            extra[5] = y->highOrderScattering;
+            extra[6] = y->multipleScattering;
+            extra[7] = y->ambientLight;
+        }
+        context->PSSetShaderResources(2, 8, extra);
+        ID3D11ShaderResourceView* sunTransmittance = opacity_.sunTransmittance();
+        context->PSSetShaderResources(10, 1, &sunTransmittance);
+        ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
+        context->PSSetSamplers(0, 2, samplers);
+        particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), width, height);
+        ID3D11ShaderResourceView* none[9] = {};
+        context->PSSetShaderResources(2, 9, none);
+    } while (blending_.firstBuildOverflowed(frame.device, context));
     pass.reset();
     if (blending != ParticleBlending::Alpha) {
         auto resolvePass = frame.profiler.scope("Clouds: blending resolve");

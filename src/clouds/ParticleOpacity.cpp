@@ -40,38 +40,44 @@ void ParticleOpacity::resize(ID3D11Device* device, unsigned particleCapacity, in
     tiles_.resize(device, resolution, resolution, static_cast<unsigned>(std::min<size_t>(size_t{particleCapacity} * perParticle, kMaxPoolBytes / kNodeStride)));
 }
 
-void ParticleOpacity::compute(FrameContext& frame, CloudParticles& particles, const ParticleTables& tables, const CloudSettings& settings) {
+// The particles drawn over the light-space map into each tile's list, each list ordered from the sun.
+void ParticleOpacity::buildTiles(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings) {
     ID3D11DeviceContext* context = frame.context;
-    computed_ = true;
-    resize(frame.device, particles.capacity(), settings.lightSpaceResolution);
     tiles_.clear(frame.device, context);  // after growing the pool, whose capacity the constants carry
     const glm::vec4 camera = frame.constants.cameraPosition, sun = frame.constants.directionToSun;
     constants_ = lightSpaceConstants(settings, glm::dvec3(camera.x, camera.y, camera.z), glm::dvec3(sun.x, sun.y, sun.z), tiles_.capacity());
     constantsBuffer_.update(context, constants_);
     const unsigned n = static_cast<unsigned>(resolution_);
-    {
-        auto pass = frame.profiler.scope("Clouds: light-space tiling");
-        // Rasterized over the map with no colour written: the pixel shader appends to the lists.
-        ID3D11RenderTargetView* target = rasterTarget_.rtv.Get();
-        ID3D11UnorderedAccessView* views[] = {tiles_.heads().uav.Get(), tiles_.nodes().uav.Get()};
-        context->OMSetRenderTargetsAndUnorderedAccessViews(1, &target, nullptr, 1, 2, views, nullptr);
-        context->OMSetBlendState(noColourWrites_.Get(), nullptr, 0xffffffffu);
-        context->OMSetDepthStencilState(nullptr, 0);
-        context->RSSetState(noCulling_.Get());
-        ID3D11Buffer* lightSpace = constantsBuffer_.get();
-        context->VSSetConstantBuffers(2, 1, &lightSpace);
-        context->PSSetConstantBuffers(2, 1, &lightSpace);
-        particles.drawInstanced(frame, kTileVertexShader, kTilePixelShader, resolution_, resolution_);
-        context->OMSetRenderTargets(0, nullptr, nullptr);
-        context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
-        // Each tile's list ordered from the sun.
-        ID3D11Buffer* buffers[] = {frame.frameConstants, particles.fieldConstants(), lightSpace};
-        context->CSSetConstantBuffers(0, 3, buffers);
-        bindCompute(context, frame.shaders.computeShader(kOrderShader), {}, {tiles_.heads().uav.Get(), tiles_.nodes().uav.Get()});
-        context->Dispatch(groupCount(n, 8), groupCount(n, 8), 1);
-        unbindCompute(context, 0, 2);
-        tiles_.copyCounts(context);
-    }
+    auto pass = frame.profiler.scope("Clouds: light-space tiling");
+    // Rasterized over the map with no colour written: the pixel shader appends to the lists.
+    ID3D11RenderTargetView* target = rasterTarget_.rtv.Get();
+    ID3D11UnorderedAccessView* views[] = {tiles_.heads().uav.Get(), tiles_.nodes().uav.Get()};
+    context->OMSetRenderTargetsAndUnorderedAccessViews(1, &target, nullptr, 1, 2, views, nullptr);
+    context->OMSetBlendState(noColourWrites_.Get(), nullptr, 0xffffffffu);
+    context->OMSetDepthStencilState(nullptr, 0);
+    context->RSSetState(noCulling_.Get());
+    ID3D11Buffer* lightSpace = constantsBuffer_.get();
+    context->VSSetConstantBuffers(2, 1, &lightSpace);
+    context->PSSetConstantBuffers(2, 1, &lightSpace);
+    particles.drawInstanced(frame, kTileVertexShader, kTilePixelShader, resolution_, resolution_);
+    context->OMSetRenderTargets(0, nullptr, nullptr);
+    context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+    // Each tile's list ordered from the sun.
+    ID3D11Buffer* buffers[] = {frame.frameConstants, particles.fieldConstants(), lightSpace};
+    context->CSSetConstantBuffers(0, 3, buffers);
+    bindCompute(context, frame.shaders.computeShader(kOrderShader), {}, {tiles_.heads().uav.Get(), tiles_.nodes().uav.Get()});
+    context->Dispatch(groupCount(n, 8), groupCount(n, 8), 1);
+    unbindCompute(context, 0, 2);
+    tiles_.copyCounts(context);
+}
+
+void ParticleOpacity::compute(FrameContext& frame, CloudParticles& particles, const ParticleTables& tables, const CloudSettings& settings) {
+    ID3D11DeviceContext* context = frame.context;
+    computed_ = true;
+    resize(frame.device, particles.capacity(), settings.lightSpaceResolution);
+    // The first lists of a new pool that did not fit it are built again, into a larger one.
+    do buildTiles(frame, particles, settings);
+    while (tiles_.firstBuildOverflowed(frame.device, context));
     {
         auto pass = frame.profiler.scope("Clouds: particle opacity");
         bindCompute(context, frame.shaders.computeShader(kOpacityShader),

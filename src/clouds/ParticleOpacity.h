@@ -29,7 +29,8 @@ public:
 
     // The node pool starts with room for this many tiles per particle of the grid's capacity at a
     // 512 map (four times as many per doubling), and grows like the fragment lists' (a few frames
-    // after a frame asked for more), up to kMaxPoolBytes.
+    // after a frame asked for more, or at once when the first lists built into it did not fit),
+    // up to kMaxPoolBytes.
     static constexpr unsigned kNodesPerParticle = 16;
     static constexpr size_t kMaxPoolBytes = size_t{512} << 20;
 
@@ -55,6 +56,7 @@ public:
 
 private:
     void resize(ID3D11Device* device, unsigned particleCapacity, int resolution);
+    void buildTiles(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings);
 
     ConstantBuffer<gpu::CloudLightSpaceConstants> constantsBuffer_;
     gpu::CloudLightSpaceConstants constants_{};

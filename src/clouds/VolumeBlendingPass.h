@@ -34,7 +34,8 @@ public:
     // The lists' pool starts with room for a pixel's whole resolve limit (32 fragments) in every
     // pixel, up to kInitialPoolBytes. When a frame asks for more, the pool grows a few frames
     // later to 5/4 of what was asked, up to kMaxPoolBytes; what does not fit is dropped (the
-    // last particles drawn, the nearest) and counted.
+    // last particles drawn, the nearest) and counted. The first lists of a new pool (at start, at
+    // a new size) are checked at once instead: see firstBuildOverflowed.
     static constexpr unsigned kNodesPerPixel = 32;
     static constexpr size_t kInitialPoolBytes = size_t{128} << 20;
     static constexpr size_t kMaxPoolBytes = size_t{512} << 20;
@@ -47,6 +48,12 @@ public:
     void bindForParticles(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, ID3D11BlendState* blend = nullptr) const;
     // The lists' views at u1 and u2 of the compute stage (tests append synthetic fragments).
     void bindListsForCompute(ID3D11DeviceContext* context) const;
+    // After the particles were drawn: true, once, when these were the first per-pixel lists of a
+    // new pool and they did not fit; the pool has grown (the GPU was waited for) and the caller
+    // begins and draws again. False for the other paths.
+    bool firstBuildOverflowed(ID3D11Device* device, ID3D11DeviceContext* context) {
+        return path_ == ParticleBlending::PerPixelLists && lists_.firstBuildOverflowed(device, context);
+    }
     // Blends what the particles left over `target` (premultiplied alpha), and unbinds the views.
     void resolve(ID3D11DeviceContext* context, ShaderLibrary& shaders, ID3D11RenderTargetView* target, ID3D11BlendState* blend = nullptr);
 

@@ -89,6 +89,11 @@ std::string Device::removedReason() const {
 }
 
 LiveObjectCounts Device::liveObjects() const {
+    waitForGpu();  // Wine destroys objects on its command-stream thread
+    return liveObjects_.counts();
+}
+
+void Device::waitForGpu() const {
     // An event query made on the driver's device, so that it is not counted itself.
     D3D11_QUERY_DESC desc{D3D11_QUERY_EVENT, 0};
     ComPtr<ID3D11Query> finished;
@@ -98,7 +103,6 @@ LiveObjectCounts Device::liveObjects() const {
     BOOL signalled = FALSE;
     // S_FALSE while the GPU works; a removed device answers with its error, and waits no more.
     while (context_->GetData(finished.Get(), &signalled, sizeof signalled, 0) == S_FALSE) Sleep(1);
-    return liveObjects_.counts();
 }
 
 std::string Device::describe() const {

@@ -34,6 +34,8 @@ public:
     // The objects made through device() that are alive, once the GPU has finished the work sent
     // so far (objects are destroyed on the driver's thread after their last Release).
     LiveObjectCounts liveObjects() const;
+    // Returns once the GPU has finished the work sent so far (or the device is removed).
+    void waitForGpu() const;
 
 private:
     ComPtr<IDXGIFactory2> factory_;

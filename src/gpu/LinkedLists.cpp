@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 namespace firmament {
 
@@ -23,18 +24,29 @@ void GpuLinkedLists::resize(ID3D11Device* device, int width, int height, unsigne
     if (resized || initialNodes != initialNodes_) {
         initialNodes_ = capacity_ = initialNodes;
         nodes_ = createStructuredBuffer(device, capacity_, stride_, nullptr, what_.c_str());
+        firstBuild_ = true;
     }
+}
+
+void GpuLinkedLists::grow(ID3D11Device* device, unsigned asked, const std::string& why) {
+    capacity_ = static_cast<unsigned>(std::min<size_t>(size_t{asked} * 5 / 4, maxNodes_));
+    nodes_ = createStructuredBuffer(device, capacity_, stride_, nullptr, what_.c_str());
+    log::info(what_ + ": the pool grows to " + std::to_string(capacity_) + " nodes (" + std::to_string(size_t{capacity_} * stride_ >> 20) +
+              " MiB) after " + why);
+}
+
+bool GpuLinkedLists::firstBuildOverflowed(ID3D11Device* device, ID3D11DeviceContext* context) {
+    if (!std::exchange(firstBuild_, false)) return false;
+    const Counts counts = read(device, context);
+    if (counts.asked <= capacity_ || capacity_ >= maxNodes_) return false;
+    grow(device, counts.asked, "the first lists built into it asked for " + std::to_string(counts.asked) + "; they are built again");
+    return true;
 }
 
 void GpuLinkedLists::clear(ID3D11Device* device, ID3D11DeviceContext* context) {
     if (const auto counts = countsReadback_.pollBits(context)) {
         latest_ = countsOf((*counts)[0], (*counts)[1]);
-        if ((*counts)[0] > capacity_ && capacity_ < maxNodes_) {
-            capacity_ = static_cast<unsigned>(std::min<size_t>(size_t{(*counts)[0]} * 5 / 4, maxNodes_));
-            nodes_ = createStructuredBuffer(device, capacity_, stride_, nullptr, what_.c_str());
-            log::info(what_ + ": the pool grows to " + std::to_string(capacity_) + " nodes (" + std::to_string(size_t{capacity_} * stride_ >> 20) +
-                      " MiB) after a frame asked for " + std::to_string((*counts)[0]));
-        }
+        if ((*counts)[0] > capacity_ && capacity_ < maxNodes_) grow(device, (*counts)[0], "a frame asked for " + std::to_string((*counts)[0]));
     }
     // Every head empty, then the counters zero (the row's other texels are never read).
     const UINT empty[4] = {0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu};

@@ -4,7 +4,9 @@
 // than the grid, whose first two texels are counters ((0, height): the nodes asked for, those past
 // the pool being dropped; (1, height): free for the user), and a pool of fixed-size nodes. The
 // counts are read back a few frames late, never waiting, and a pool that was too small grows to
-// 5/4 of what a frame asked for, up to a limit.
+// 5/4 of what a frame asked for, up to a limit. Only the first build into a new pool (at start,
+// after the grid or the first guess changed) waits for its counts, so that no frame after a
+// start or a resize is drawn with lists cut short.
 #include "gpu/Buffers.h"
 #include "gpu/DelayedScalarReadback.h"
 #include "gpu/Texture.h"
@@ -30,6 +32,10 @@ public:
     void clear(ID3D11Device* device, ID3D11DeviceContext* context);
     // After the lists are built: the counters copied for the late read.
     void copyCounts(ID3D11DeviceContext* context);
+    // After the lists are built (and their counts copied): true, once, when these were the first
+    // lists of a new pool and they did not fit it. It waits for the GPU then (and only then), grows
+    // the pool to 5/4 of what was asked, and the caller builds the lists again, into the new pool.
+    bool firstBuildOverflowed(ID3D11Device* device, ID3D11DeviceContext* context);
 
     struct Counts {
         unsigned asked = 0;    // nodes asked for
@@ -47,12 +53,15 @@ public:
 
 private:
     Counts countsOf(unsigned asked, unsigned second) const { return {asked, asked > capacity_ ? asked - capacity_ : 0u, second}; }
+    // A pool for 5/4 of `asked` nodes, up to the limit; `why` ends the log line.
+    void grow(ID3D11Device* device, unsigned asked, const std::string& why);
 
     unsigned stride_;
     size_t maxNodes_;
     std::string what_;
     int width_ = 0, height_ = 0;
     unsigned initialNodes_ = 0, capacity_ = 0;
+    bool firstBuild_ = false;  // no lists were built into this pool yet
     Texture2D heads_;
     StructuredBuffer nodes_;
     DelayedScalarReadback countsReadback_;

@@ -2,7 +2,26 @@
 
 #include "gpu/Hresult.h"
 
+#include <vector>
+
 namespace firmament {
+
+namespace {
+// The factories whose window association decides what Alt+Enter does: the one that makes the swap
+// chain (Windows reads its association, and resets it when the swap chain is made, so it is set
+// after that), and the one the device was made from (D3D11CreateDevice makes its own when given no
+// adapter; Wine's DXGI reads that one's association, the first made, so it is set before too).
+std::vector<ComPtr<IDXGIFactory>> associatedFactories(const Device& device) {
+    std::vector<ComPtr<IDXGIFactory>> factories{device.factory()};
+    ComPtr<IDXGIDevice> dxgiDevice;
+    ComPtr<IDXGIAdapter> adapter;
+    ComPtr<IDXGIFactory> deviceFactory;
+    if (SUCCEEDED(device.driverDevice()->QueryInterface(IID_PPV_ARGS(&dxgiDevice))) && SUCCEEDED(dxgiDevice->GetAdapter(&adapter)) &&
+        SUCCEEDED(adapter->GetParent(IID_PPV_ARGS(&deviceFactory))) && deviceFactory.Get() != factories.front().Get())
+        factories.push_back(deviceFactory);
+    return factories;
+}
+}  // namespace
 
 SwapChain::SwapChain(const Device& device, HWND window, int width, int height)
     : device_(device.device()), width_(width), height_(height), tearing_(device.tearingSupported()) {
@@ -17,10 +36,13 @@ SwapChain::SwapChain(const Device& device, HWND window, int width, int height)
     desc.SwapEffect = DXGI_SWAP_EFFECT_FLIP_DISCARD;
     desc.AlphaMode = DXGI_ALPHA_MODE_IGNORE;
     desc.Flags = tearing_ ? DXGI_SWAP_CHAIN_FLAG_ALLOW_TEARING : 0;
+    // Alt+Enter is the window's own borderless full screen (Window::toggleFullScreen), so DXGI must
+    // not toggle its own too: each would undo the other.
+    const std::vector<ComPtr<IDXGIFactory>> factories = associatedFactories(device);
+    for (const auto& factory : factories) factory->MakeWindowAssociation(window, DXGI_MWA_NO_ALT_ENTER);
     check(device.factory()->CreateSwapChainForHwnd(device.driverDevice(), window, &desc, nullptr, nullptr, &swapChain_),
           "CreateSwapChainForHwnd");
-    // Alt+Enter is the window's own borderless full screen (Window::toggleFullScreen).
-    device.factory()->MakeWindowAssociation(window, DXGI_MWA_NO_ALT_ENTER);
+    for (const auto& factory : factories) factory->MakeWindowAssociation(window, DXGI_MWA_NO_ALT_ENTER);
     createViews();
 }
 

@@ -46,7 +46,7 @@ public:
         if (!pending_->done()) {
             auto pass = profiler.scope(passName_);
             if (finishNow) pending_->runAll(context, shaders);
-            else pending_->step(context, shaders);
+            else pending_->stepInFrame(context, shaders);
         }
         if (pending_->done()) finish(device, context, storage);
     }

@@ -64,6 +64,16 @@ public:
         if (done()) scratch_.reset();
         return true;
     }
+    // One unit, as a window runs them (one a frame so that it stays responsive), logging the
+    // start and every 10%.
+    void stepInFrame(ID3D11DeviceContext* context, ShaderLibrary& shaders) {
+        if (next_ == 0)
+            log::info(logPrefix_ + "pre-computing " + describeTables(parameters_) + ": " + std::to_string(units_.size()) +
+                      " units of work, one a frame");
+        const int before = percentDone();
+        if (step(context, shaders) && percentDone() / 10 > before / 10)
+            log::info(logPrefix_ + std::to_string(percentDone()) + "%, next: " + currentStage());
+    }
     // Runs every remaining unit, logging progress; waits for the GPU at the end.
     void runAll(ID3D11DeviceContext* context, ShaderLibrary& shaders) {
         log::info(logPrefix_ + "pre-computing " + describeTables(parameters_));
@@ -71,6 +81,7 @@ public:
     }
 
     bool done() const { return next_ >= units_.size(); }
+    int percentDone() const { return static_cast<int>(progress() * 100.0); }
     double progress() const { return units_.empty() ? 1.0 : static_cast<double>(next_) / static_cast<double>(units_.size()); }
     std::string currentStage() const { return done() ? "done" : stageName(units_[next_].stage, units_[next_].order); }
     // The tables were filled another way (from files): nothing is left to run.

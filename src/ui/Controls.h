@@ -23,6 +23,7 @@ inline constexpr std::array kControls{
     ControlBinding{"1 .. 9", "Recall a bookmark"},
     ControlBinding{"F5 / F9", "Save / load the whole state (--state-file)"},
     ControlBinding{"F8", "Reload every shader from the HLSL folder"},
+    ControlBinding{"F12", "Capture the frame (PNG and EXR; --capture names them)"},
     ControlBinding{"F1", "Show or hide this help"},
     ControlBinding{"Alt+Enter", "Toggle borderless full screen"},
     ControlBinding{"Esc", "Quit"},

@@ -2,7 +2,10 @@
 
 #include <windows.h>
 
+#include <condition_variable>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 namespace firmament::test {
 
@@ -24,9 +27,13 @@ std::wstring quote(const std::wstring& argument) {
     out.append(backslashes * 2, L'\\');
     return out + L"\"";
 }
-}  // namespace
 
-ProcessResult runProcess(const std::wstring& program, const std::vector<std::wstring>& arguments) {
+struct Started {
+    PROCESS_INFORMATION process{};
+    HANDLE output = nullptr;  // the read end of the program's stdout and stderr
+};
+
+Started start(const std::wstring& program, const std::vector<std::wstring>& arguments) {
     SECURITY_ATTRIBUTES inherit{sizeof inherit, nullptr, TRUE};
     HANDLE readEnd = nullptr, writeEnd = nullptr;
     if (!CreatePipe(&readEnd, &writeEnd, &inherit, 0)) throw std::runtime_error("CreatePipe failed");
@@ -41,25 +48,108 @@ ProcessResult runProcess(const std::wstring& program, const std::vector<std::wst
     startup.hStdOutput = writeEnd;
     startup.hStdError = writeEnd;
     startup.hStdInput = GetStdHandle(STD_INPUT_HANDLE);
-    PROCESS_INFORMATION process{};
-    const BOOL started = CreateProcessW(program.c_str(), commandLine.data(), nullptr, nullptr, TRUE, 0, nullptr, nullptr,
-                                       &startup, &process);
+    Started started;
+    const BOOL ok = CreateProcessW(program.c_str(), commandLine.data(), nullptr, nullptr, TRUE, 0, nullptr, nullptr, &startup,
+                                   &started.process);
     CloseHandle(writeEnd);
-    if (!started) {
+    if (!ok) {
         CloseHandle(readEnd);
         throw std::runtime_error("CreateProcessW failed for the program under test");
     }
+    started.output = readEnd;
+    return started;
+}
+}  // namespace
 
+ProcessResult runProcess(const std::wstring& program, const std::vector<std::wstring>& arguments) {
+    const Started started = start(program, arguments);
     ProcessResult result;
     char buffer[4096];
     DWORD read = 0;
-    while (ReadFile(readEnd, buffer, sizeof buffer, &read, nullptr) && read > 0) result.output.append(buffer, read);
-    WaitForSingleObject(process.hProcess, INFINITE);
-    GetExitCodeProcess(process.hProcess, &result.exitCode);
-    CloseHandle(process.hProcess);
-    CloseHandle(process.hThread);
-    CloseHandle(readEnd);
+    while (ReadFile(started.output, buffer, sizeof buffer, &read, nullptr) && read > 0) result.output.append(buffer, read);
+    WaitForSingleObject(started.process.hProcess, INFINITE);
+    GetExitCodeProcess(started.process.hProcess, &result.exitCode);
+    CloseHandle(started.process.hProcess);
+    CloseHandle(started.process.hThread);
+    CloseHandle(started.output);
     return result;
+}
+
+struct RunningProcess::Impl {
+    Started started;
+    std::thread reader;
+    mutable std::mutex mutex;
+    mutable std::condition_variable grew;
+    std::string output;
+    bool ended = false;  // the pipe was closed: the program (and everything that held it) ended
+
+    ~Impl() {
+        CloseHandle(started.process.hProcess);
+        CloseHandle(started.process.hThread);
+        CloseHandle(started.output);
+    }
+
+    void read() {
+        char buffer[4096];
+        DWORD count = 0;
+        while (ReadFile(started.output, buffer, sizeof buffer, &count, nullptr) && count > 0) {
+            std::lock_guard lock(mutex);
+            output.append(buffer, count);
+            grew.notify_all();
+        }
+        std::lock_guard lock(mutex);
+        ended = true;
+        grew.notify_all();
+    }
+};
+
+RunningProcess::RunningProcess(const std::wstring& program, const std::vector<std::wstring>& arguments)
+    : impl_(std::make_shared<Impl>()) {
+    impl_->started = start(program, arguments);
+    impl_->reader = std::thread([impl = impl_] { impl->read(); });
+}
+
+RunningProcess::~RunningProcess() {
+    if (WaitForSingleObject(impl_->started.process.hProcess, 0) == WAIT_TIMEOUT) {
+        TerminateProcess(impl_->started.process.hProcess, 1);
+        WaitForSingleObject(impl_->started.process.hProcess, 10000);
+    }
+    // The pipe ends with the program. Should a process it started still hold it, the reader is
+    // left to end with that one (it shares the state it reads into).
+    bool ended = false;
+    {
+        std::unique_lock lock(impl_->mutex);
+        ended = impl_->grew.wait_for(lock, std::chrono::seconds(10), [&] { return impl_->ended; });
+    }
+    if (ended) impl_->reader.join();
+    else impl_->reader.detach();
+}
+
+unsigned long RunningProcess::id() const { return impl_->started.process.dwProcessId; }
+
+std::string RunningProcess::output() const {
+    std::lock_guard lock(impl_->mutex);
+    return impl_->output;
+}
+
+bool RunningProcess::waitForOutput(const std::string& text, std::chrono::milliseconds timeout, int times) const {
+    const auto found = [&] {
+        int count = 0;
+        for (size_t at = impl_->output.find(text); at != std::string::npos && count < times; at = impl_->output.find(text, at + text.size())) ++count;
+        return count >= times;
+    };
+    std::unique_lock lock(impl_->mutex);
+    return impl_->grew.wait_for(lock, timeout, [&] { return found() || impl_->ended; }) && found();
+}
+
+std::optional<unsigned long> RunningProcess::waitForExit(std::chrono::milliseconds timeout) {
+    if (WaitForSingleObject(impl_->started.process.hProcess, static_cast<DWORD>(timeout.count())) != WAIT_OBJECT_0) return std::nullopt;
+    DWORD code = 0;
+    GetExitCodeProcess(impl_->started.process.hProcess, &code);
+    // The rest of its output: the pipe closes with it.
+    std::unique_lock lock(impl_->mutex);
+    impl_->grew.wait_for(lock, std::chrono::seconds(10), [&] { return impl_->ended; });
+    return code;
 }
 
 }  // namespace firmament::test

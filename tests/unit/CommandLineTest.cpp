@@ -84,6 +84,17 @@ TEST(CommandLine, BadInputNamesTheProblem) {
     expectError({"--simulate-device-loss", "soon"}, "is not a frame number");
 }
 
+TEST(CommandLine, TimeStepTakesSecondsFromZeroToOne) {
+    EXPECT_FALSE(parse({}).options.timeStep.has_value());
+    EXPECT_EQ(parse({"--time-step", "0"}).options.timeStep, 0.0);
+    EXPECT_EQ(parse({"--time-step=0.5"}).options.timeStep, 0.5);
+    expectError({"--time-step", "-0.1"}, "--time-step: '-0.1' is not a number of seconds from 0 to 1");
+    expectError({"--time-step", "2"}, "is not a number of seconds from 0 to 1");
+    expectError({"--time-step", "soon"}, "is not a number of seconds");
+    expectError({"--time-step", "nan"}, "is not a number of seconds");
+    expectError({"--time-step"}, "--time-step needs a value");
+}
+
 TEST(CommandLine, SimulatedDeviceLossTakesAFrameNumber) {
     EXPECT_FALSE(parse({}).options.simulateDeviceLoss.has_value());
     EXPECT_EQ(parse({"--simulate-device-loss", "12"}).options.simulateDeviceLoss, 12);
@@ -94,7 +105,7 @@ TEST(CommandLine, UsageListsEveryOption) {
     const std::string usage = usageText();
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
                                "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
-                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--simulate-device-loss", "--version", "--help"})
+                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--simulate-device-loss", "--time-step", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
 }
 
