@@ -232,9 +232,11 @@ void App::handleRequests(const GuiRequests& requests) {
 }
 
 int App::run() {
-    // A headless flight renders its whole length (at the fixed 60 Hz step) unless --frames says otherwise.
-    const int frames = flight_ && options_.headless && !options_.frames && !soak_
-                           ? static_cast<int>(std::ceil(flight_->duration() * 60.0)) + 1
+    // A headless flight renders its whole length at the fixed step (1/60 s, or --time-step's)
+    // unless --frames says otherwise; a held clock (--time-step 0) renders --frames' default.
+    const double step = options_.timeStep.value_or(1.0 / 60.0);
+    const int frames = flight_ && options_.headless && !options_.frames && !soak_ && step > 0.0
+                           ? static_cast<int>(std::ceil(flight_->duration() / step - 1e-9)) + 1
                            : options_.frameCount();
     if (flight_) log::info("playing " + flight_->describe());
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {

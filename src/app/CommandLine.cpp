@@ -253,7 +253,8 @@ Device
                          again; settings and camera are kept (a test of the path)
 Running
   --time-step SECONDS    each frame advances the clock by exactly this (headless
-                         default 1/60); 0 holds the clouds and the sun still
+                         default 1/60; a headless --flight is flown at this step);
+                         0 holds the clouds and the sun still
   --headless             no visible window; WARP unless --hardware or --adapter;
                          renders --frames frames (default 30), prints GPU times
   --frames N             stop after N frames

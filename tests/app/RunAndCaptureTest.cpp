@@ -212,6 +212,16 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
     const auto recorded = nlohmann::json::parse(std::ifstream(folder / "recorded.json"));
     ASSERT_GE(recorded["keyframes"].size(), 5u);
     EXPECT_EQ(recorded["keyframes"].back()["camera"]["yaw"], 90.0);
+
+    // With --time-step the flight is flown at that step (tools/demo's 10 frames a second): 0.5 s
+    // in steps of 0.125 s is 5 frames, both ends, with the same views at the captures' times.
+    const ProcessResult coarse =
+        runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
+                                    L"--time-step", L"0.125", L"--capture", (folder / "coarse.png").wstring()});
+    ASSERT_EQ(coarse.exitCode, 0u) << coarse.output;
+    EXPECT_NE(coarse.output.find("GPU time per pass over 5 frames"), std::string::npos) << coarse.output;
+    EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "coarse.exr").attributes.at("firmament.view")), view);
+    EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "coarse-middle.exr").attributes.at("firmament.view")), middle);
     std::filesystem::remove_all(folder);
 }
 
