@@ -19,8 +19,8 @@ struct ProcessCounters {
 ProcessCounters sampleProcessCounters();  // throws Error when the system cannot say
 
 // The CPU time this process has used so far, user and kernel, every thread, in seconds
-// (GetProcessTimes; Wine answers for its own process from times(2)). On a CPU device this is the
-// GPU's work too. -1 when the system cannot say.
+// (GetProcessTimes; under Wine it counts llvmpipe's threads too: measured, docs/building.md). On
+// a CPU device this is the GPU's work too. -1 when the system cannot say.
 double processCpuSeconds();
 
 }  // namespace firmament
