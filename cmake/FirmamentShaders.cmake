@@ -39,6 +39,15 @@ else()
 endif()
 message(STATUS "Firmament: shaders compiled with ${FIRMAMENT_SHADER_BACKEND}")
 
+# vkd3d-compiler runs through cmake/shader-cache.sh, a cache of compiled shaders kept where
+# FIRMAMENT_SHADER_CACHE points at build time (tools/ sets it to a folder in the cache folder).
+set(FIRMAMENT_SHADER_LAUNCHER "")
+set(FIRMAMENT_SHADER_LAUNCHER_SCRIPT "")
+if(FIRMAMENT_SHADER_BACKEND STREQUAL "vkd3d" AND FIRMAMENT_COMPILER_CACHE AND CMAKE_HOST_UNIX)
+    set(FIRMAMENT_SHADER_LAUNCHER_SCRIPT "${CMAKE_CURRENT_LIST_DIR}/shader-cache.sh")
+    set(FIRMAMENT_SHADER_LAUNCHER sh "${FIRMAMENT_SHADER_LAUNCHER_SCRIPT}")
+endif()
+
 function(firmament_shader_library target)
     cmake_parse_arguments(ARG "" "ROOT;OUTPUT" "" ${ARGN})
     add_custom_target(${target} ALL)
@@ -92,8 +101,8 @@ function(firmament_add_shader target)
         endforeach()
         string(APPEND wrapper_text "#include \"${source}\"\n")
         file(CONFIGURE OUTPUT "${wrapper}" CONTENT "${wrapper_text}" @ONLY)
-        set(command ${FIRMAMENT_VKD3D_COMPILER} -x hlsl -b dxbc-tpf -p ${ARG_PROFILE}
-            -e ${ARG_ENTRY} -o "${cso}" "${wrapper}")
+        set(command ${FIRMAMENT_SHADER_LAUNCHER} ${FIRMAMENT_VKD3D_COMPILER} -x hlsl -b dxbc-tpf
+            -p ${ARG_PROFILE} -e ${ARG_ENTRY} -o "${cso}" "${wrapper}")
     else()
         set(define_args "")
         foreach(define IN LISTS ARG_DEFINES)
@@ -106,7 +115,7 @@ function(firmament_add_shader target)
     add_custom_command(OUTPUT "${cso}"
         COMMAND ${CMAKE_COMMAND} -E make_directory "${output_dir}"
         COMMAND ${command}
-        DEPENDS "${source}" ${headers} ${extra_headers}
+        DEPENDS "${source}" ${headers} ${extra_headers} ${FIRMAMENT_SHADER_LAUNCHER_SCRIPT}
         WORKING_DIRECTORY "${include_root}"
         COMMENT "HLSL ${ARG_FILE} (${ARG_ENTRY}, ${ARG_PROFILE})"
         VERBATIM)

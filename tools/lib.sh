@@ -57,6 +57,7 @@ in_sysroot() {
     local root
     root=$(sysroot_dir)
     sysroot_ready || die "sysroot $root is not complete: run tools/sysroot/create"
+    mkdir -p "$FIRMAMENT_CACHE/ccache" "$FIRMAMENT_CACHE/shader-cache" "$FIRMAMENT_CACHE/tables"
     local args=(
         --bind "$root" /
         --proc /proc --dev /dev --tmpfs /tmp
@@ -68,6 +69,20 @@ in_sysroot() {
         --setenv PATH /usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin
         --setenv LANG C.UTF-8
         --unsetenv DISPLAY --unsetenv XAUTHORITY
+        # The compiler cache (cmake/FirmamentCompilerCache.cmake) lives in the cache folder, so
+        # that it outlives a checkout. Its objects are keyed by their preprocessed input, so
+        # the sloppiness the precompiled headers need (their #defines and __TIME__, and the
+        # times of headers a fresh clone has just written) costs nothing in correctness.
+        --bind "$FIRMAMENT_CACHE/ccache" /var/cache/ccache
+        --setenv CCACHE_DIR /var/cache/ccache
+        --setenv CCACHE_MAXSIZE 4G
+        --setenv CCACHE_SLOPPINESS pch_defines,time_macros,include_file_mtime,include_file_ctime
+        # The compiled shaders' cache (cmake/shader-cache.sh), beside it.
+        --bind "$FIRMAMENT_CACHE/shader-cache" /var/cache/firmament-shaders
+        --setenv FIRMAMENT_SHADER_CACHE /var/cache/firmament-shaders
+        # The program's table cache under Wine (tools/sandbox/session), shared by checkouts.
+        --bind "$FIRMAMENT_CACHE/tables" /var/cache/firmament-tables
+        --setenv FIRMAMENT_TABLE_CACHE /var/cache/firmament-tables
     )
     # Host folders and files a command names outside the checkout (tools/demo's path arguments),
     # bound at their own paths.

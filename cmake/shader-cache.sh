@@ -1,0 +1,42 @@
+#!/bin/sh
+# shader-cache.sh COMPILER ARGS... -o OUTPUT INPUT: runs vkd3d-compiler through a cache of
+# compiled shaders (cmake/FirmamentCompilerCache.cmake), the shaders' counterpart of ccache.
+# The key is the compiler's version, its arguments less the output's name, and the source as
+# vkd3d-compiler's own preprocessor expands it (so an edited header changes the key). With
+# FIRMAMENT_SHADER_CACHE unset, or a source that does not preprocess, it only runs the
+# compiler, whose messages and exit status are passed on unchanged.
+set -u
+compiler=$1
+shift
+cache=${FIRMAMENT_SHADER_CACHE:-}
+[ -n "$cache" ] || exec "$compiler" "$@"
+
+# The arguments without "-o OUTPUT"; the input is the last one.
+output=
+input=
+keyed=
+previous=
+for argument in "$@"; do
+    if [ "$previous" = "-o" ]; then
+        output=$argument
+    elif [ "$argument" != "-o" ]; then
+        keyed="$keyed $argument"
+    fi
+    previous=$argument
+    input=$argument
+done
+[ -n "$output" ] || exec "$compiler" "$@"
+
+key=$({
+    "$compiler" --version
+    echo "$keyed"
+    "$compiler" -x hlsl -E "$input" 2>/dev/null || echo "no preprocessed source: $$"
+} | sha256sum | cut -c1-40)
+entry="$cache/$(echo "$key" | cut -c1-2)/$key.cso"
+if [ -f "$entry" ]; then
+    cp "$entry" "$output.tmp.$$" && mv "$output.tmp.$$" "$output" && exit 0
+fi
+"$compiler" "$@" || exit $?
+mkdir -p "$cache/$(echo "$key" | cut -c1-2)" 2>/dev/null &&
+    cp "$output" "$entry.tmp.$$" 2>/dev/null && mv "$entry.tmp.$$" "$entry" 2>/dev/null
+exit 0
