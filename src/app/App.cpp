@@ -335,16 +335,19 @@ void App::update() {
     if (flight_ && !flightDone_) {
         // The recorded path drives, and input waits for its end. The frame at or past the end shows
         // the last keyframe exactly: a one-keyframe flight is a still view.
-        // A soak flies it in a loop.
+        // A soak flies it in a loop. The flight's clock starts at its first frame, which shows
+        // time zero (a fixed step's clock has already advanced one step by then).
+        if (flightShown_ < 0.0) flightStart_ = now;
+        const double flightTime = now - flightStart_;
         const bool loop = soak_ && flight_->duration() > 0.0;
-        const Bookmark view = flight_->at(loop ? std::fmod(now, flight_->duration()) : now);
+        const Bookmark view = flight_->at(loop ? std::fmod(flightTime, flight_->duration()) : flightTime);
         state_.camera = view.camera;
         state_.sun = view.sun;
-        flightDone_ = !loop && now >= flight_->duration();
+        flightDone_ = !loop && flightTime >= flight_->duration();
         // (A microsecond's tolerance: the fixed steps add up to a keyframe's time only to rounding.)
         constexpr double kTolerance = 1e-6;
-        if (!loop) dueCaptures_ = flight_->capturesBetween(flightShown_ + kTolerance, now + kTolerance);
-        flightShown_ = now;
+        if (!loop) dueCaptures_ = flight_->capturesBetween(flightShown_ + kTolerance, flightTime + kTolerance);
+        flightShown_ = flightTime;
     } else {
         fly(state_.camera, state_.sun, state_.flight, input, dt);
         if (state_.atmosphere.animateSun) animateSun(state_.sun, dt);

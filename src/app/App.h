@@ -89,6 +89,7 @@ private:
     std::optional<FlightPath> flight_;
     bool flightDone_ = false;  // the flight's last keyframe has been shown
     double flightShown_ = -1.0;  // the flight's time the last frame showed (-1 before the first)
+    double flightStart_ = 0.0;   // the clock's time at the flight's first frame, its time zero
     std::vector<std::string> dueCaptures_;  // this frame's flight captures
     bool shotRequested_ = false;            // F12 was pressed: capture the next frame
     int shotsTaken_ = 0;

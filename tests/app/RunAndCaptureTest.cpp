@@ -189,9 +189,9 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "flight.json") << R"({"keyframes": [
-        {"time": 0, "camera": {"position": [0, 100, 0], "yaw": 0}},
+        {"time": 0, "camera": {"position": [0, 4100, 0], "yaw": 0}},
         {"time": 0.5, "camera": {"position": [0, 2100, 1000], "yaw": 90}}],
-        "captures": [{"time": 0.25, "name": "middle"}, {"time": 0.5, "name": "last"}]})";
+        "captures": [{"time": 0, "name": "first"}, {"time": 0.25, "name": "middle"}, {"time": 0.5, "name": "last"}]})";
     const ProcessResult run =
         runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
                                     L"--record-flight", (folder / "recorded.json").wstring(), L"--capture",
@@ -202,10 +202,14 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
     const glm::mat4 view = std::get<glm::mat4>(readExr(folder / "end.exr").attributes.at("firmament.view"));
     const glm::vec4 eye = view * glm::vec4(0.0f, 2100.0f, 1000.0f, 1.0f);
     EXPECT_NEAR(glm::length(glm::vec3(eye)), 0.0f, 1e-2f);
-    // The flight's captures beside it, each of the first frame at or past its time: the middle one
-    // halfway (t = 0.25 exactly), the last one the last keyframe's view.
+    // The flight's captures beside it, each of the first frame at or past its time: the first
+    // frame shows time zero, the first keyframe (a fixed step's clock has already advanced one
+    // step by then: the demo's sunrise was once its second frame), the middle one halfway
+    // (t = 0.25 exactly), the last one the last keyframe's view.
+    const glm::mat4 first = std::get<glm::mat4>(readExr(folder / "end-first.exr").attributes.at("firmament.view"));
+    EXPECT_NEAR(glm::length(glm::vec3(first * glm::vec4(0.0f, 4100.0f, 0.0f, 1.0f))), 0.0f, 1e-2f);
     const glm::mat4 middle = std::get<glm::mat4>(readExr(folder / "end-middle.exr").attributes.at("firmament.view"));
-    EXPECT_NEAR(glm::length(glm::vec3(middle * glm::vec4(0.0f, 1100.0f, 500.0f, 1.0f))), 0.0f, 1e-2f);
+    EXPECT_NEAR(glm::length(glm::vec3(middle * glm::vec4(0.0f, 3100.0f, 500.0f, 1.0f))), 0.0f, 1e-2f);
     EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "end-last.exr").attributes.at("firmament.view")), view);
     EXPECT_NE(run.output.find("captured"), std::string::npos);
     // The recording holds the same path, ten keyframes a second.
@@ -222,6 +226,7 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
     EXPECT_NE(coarse.output.find("GPU time per pass over 5 frames"), std::string::npos) << coarse.output;
     EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "coarse.exr").attributes.at("firmament.view")), view);
     EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "coarse-middle.exr").attributes.at("firmament.view")), middle);
+    EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "coarse-first.exr").attributes.at("firmament.view")), first);
     std::filesystem::remove_all(folder);
 }
 

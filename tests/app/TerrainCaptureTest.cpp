@@ -103,7 +103,7 @@ TEST(TerrainCapture, LevelsMeetWithoutCracks) {
         {"default", {L"camera.position=0,8000,0", L"camera.pitch=-20"}},
         {"far", {L"camera.position=-12345,300,777", L"camera.yaw=-160", L"camera.pitch=-4"}},
         {"high", {L"camera.position=30000,20000,-50000", L"camera.yaw=120", L"camera.pitch=-45"}},
-        {"demo's end", {L"camera.position=6000,40000,9000", L"camera.yaw=120", L"camera.pitch=-60"}},
+        {"demo's end", {L"camera.position=9000,40000,9000", L"camera.yaw=80", L"camera.pitch=-12"}},
         {"orbit", {L"camera.position=0,400000,0", L"camera.pitch=-30"}},  // the horizon 2,260 km away
     };
     for (const View& v : views) {
