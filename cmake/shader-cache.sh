@@ -34,6 +34,7 @@ key=$({
 } | sha256sum | cut -c1-40)
 entry="$cache/$(echo "$key" | cut -c1-2)/$key.cso"
 if [ -f "$entry" ]; then
+    touch "$entry" 2>/dev/null  # last used now: tools/build removes entries unused for 30 days
     cp "$entry" "$output.tmp.$$" && mv "$output.tmp.$$" "$output" && exit 0
 fi
 "$compiler" "$@" || exit $?

@@ -70,9 +70,9 @@ in_sysroot() {
         --setenv LANG C.UTF-8
         --unsetenv DISPLAY --unsetenv XAUTHORITY
         # The compiler cache (cmake/FirmamentCompilerCache.cmake) lives in the cache folder, so
-        # that it outlives a checkout. Its objects are keyed by their preprocessed input, so
-        # the sloppiness the precompiled headers need (their #defines and __TIME__, and the
-        # times of headers a fresh clone has just written) costs nothing in correctness.
+        # that it outlives a checkout. Its objects are keyed by the contents of the source and
+        # its headers, so the sloppiness the precompiled headers need (their #defines and
+        # __TIME__, and the times of headers a fresh clone has just written) keeps hits exact.
         --bind "$FIRMAMENT_CACHE/ccache" /var/cache/ccache
         --setenv CCACHE_DIR /var/cache/ccache
         --setenv CCACHE_MAXSIZE 4G
