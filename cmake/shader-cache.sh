@@ -1,6 +1,6 @@
 #!/bin/sh
 # shader-cache.sh COMPILER ARGS... -o OUTPUT INPUT: runs vkd3d-compiler through a cache of
-# compiled shaders (cmake/FirmamentCompilerCache.cmake), the shaders' counterpart of ccache.
+# compiled shaders (set up in cmake/FirmamentShaders.cmake), the shaders' counterpart of ccache.
 # The key is the compiler's version, its arguments less the output's name, and the source as
 # vkd3d-compiler's own preprocessor expands it (so an edited header changes the key). With
 # FIRMAMENT_SHADER_CACHE unset, or a source that does not preprocess, it only runs the
@@ -27,11 +27,17 @@ for argument in "$@"; do
 done
 [ -n "$output" ] || exec "$compiler" "$@"
 
+preprocessed=$(mktemp) || exec "$compiler" "$@"
+if ! "$compiler" -x hlsl -E "$input" >"$preprocessed" 2>/dev/null; then
+    rm -f "$preprocessed"
+    exec "$compiler" "$@"
+fi
 key=$({
     "$compiler" --version
     echo "$keyed"
-    "$compiler" -x hlsl -E "$input" 2>/dev/null || echo "no preprocessed source: $$"
+    cat "$preprocessed"
 } | sha256sum | cut -c1-40)
+rm -f "$preprocessed"
 entry="$cache/$(echo "$key" | cut -c1-2)/$key.cso"
 if [ -f "$entry" ]; then
     touch "$entry" 2>/dev/null  # last used now: tools/build removes entries unused for 30 days
