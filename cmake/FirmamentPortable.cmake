@@ -28,6 +28,7 @@ configure_file(${src}/FirmamentVersion.h.in ${CMAKE_CURRENT_BINARY_DIR}/generate
 add_library(firmament_portable STATIC
     ${src}/app/BenchmarkPlan.cpp
     ${src}/app/BenchmarkReport.cpp
+    ${src}/app/CaptureBatch.cpp
     ${src}/app/CommandLine.cpp
     ${src}/app/FlightPath.cpp
     ${src}/app/SoakSchedule.cpp
@@ -75,6 +76,7 @@ set(tests ${PROJECT_SOURCE_DIR}/tests)
 add_executable(firmament_portable_tests
     ${tests}/support/TestMain.cpp
     ${tests}/unit/BenchmarkPlanTest.cpp
+    ${tests}/unit/CaptureBatchTest.cpp
     ${tests}/unit/BrunetonParameterizationTest.cpp
     ${tests}/unit/CameraTest.cpp
     ${tests}/unit/CascadeSplitsTest.cpp
@@ -105,7 +107,9 @@ firmament_warnings(firmament_portable_tests)
 add_custom_command(TARGET firmament_portable_tests POST_BUILD
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/clouds $<TARGET_FILE_DIR:firmament_portable_tests>/media/clouds
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/soak $<TARGET_FILE_DIR:firmament_portable_tests>/media/soak)
-gtest_discover_tests(firmament_portable_tests TEST_PREFIX "portable." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+# Two processes (GoogleTest's shards) rather than one per case, as the Windows build's unit tests.
+include(${CMAKE_CURRENT_LIST_DIR}/FirmamentTestGroups.cmake)
+firmament_test_groups(firmament_portable_tests SHARDS 2 TIMEOUT 600)
 
 if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     include(${tests}/fuzz/FuzzTargets.cmake)

@@ -12,7 +12,8 @@
 # defines, written "file|entry|profile|A=1,B=2". The library writes manifest.txt beside the
 # .cso files, one "key<TAB>cso file" line per permutation; the program looks permutations up
 # by that key (src/gpu/ShaderKey.h builds the same string). Its first line, "#source<TAB>ROOT",
-# names the HLSL folder, which hot reload (F8) compiles from.
+# names the HLSL folder, which hot reload (F8) compiles from; a "#cache<TAB>SCRIPT" line, when the
+# build compiles through cmake/shader-cache.sh, lets hot reload use the same cache.
 #
 # Compilers: vkd3d-compiler (Linux, the sysroot) or FXC (Windows SDK). Pick one with
 # FIRMAMENT_SHADER_COMPILER=vkd3d|fxc; by default the first found is used.
@@ -127,6 +128,9 @@ function(_firmament_write_manifest target)
     get_target_property(output_dir ${target} FIRMAMENT_SHADER_OUTPUT)
     get_target_property(root ${target} FIRMAMENT_SHADER_ROOT)
     get_target_property(lines ${target} FIRMAMENT_SHADER_MANIFEST)
+    if(FIRMAMENT_SHADER_LAUNCHER_SCRIPT)
+        list(PREPEND lines "#cache\t${FIRMAMENT_SHADER_LAUNCHER_SCRIPT}")
+    endif()
     list(PREPEND lines "#source\t${root}")
     list(JOIN lines "\n" content)
     file(GENERATE OUTPUT "${output_dir}/manifest.txt" CONTENT "${content}\n")

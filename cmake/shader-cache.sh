@@ -1,8 +1,9 @@
 #!/bin/sh
 # shader-cache.sh COMPILER ARGS... -o OUTPUT INPUT: runs vkd3d-compiler through a cache of
 # compiled shaders (set up in cmake/FirmamentShaders.cmake), the shaders' counterpart of ccache.
-# The key is the compiler's version, its arguments less the output's name, and the source as
-# vkd3d-compiler's own preprocessor expands it (so an edited header changes the key). With
+# The key is the compiler's version, its arguments less the output's and the input's names, and
+# the source as vkd3d-compiler's own preprocessor expands it (so an edited header changes the
+# key, and a wrapper of the same text elsewhere, such as hot reload's, finds the build's entry). With
 # FIRMAMENT_SHADER_CACHE unset, or a source that does not preprocess, it only runs the
 # compiler, whose messages and exit status are passed on unchanged.
 set -u
@@ -11,7 +12,7 @@ shift
 cache=${FIRMAMENT_SHADER_CACHE:-}
 [ -n "$cache" ] || exec "$compiler" "$@"
 
-# The arguments without "-o OUTPUT"; the input is the last one.
+# The arguments without "-o OUTPUT" and the input, the last one.
 output=
 input=
 keyed=
@@ -20,10 +21,10 @@ for argument in "$@"; do
     if [ "$previous" = "-o" ]; then
         output=$argument
     elif [ "$argument" != "-o" ]; then
-        keyed="$keyed $argument"
+        [ -z "$input" ] || keyed="$keyed $input"  # the one before was not the last
+        input=$argument
     fi
     previous=$argument
-    input=$argument
 done
 [ -n "$output" ] || exec "$compiler" "$@"
 

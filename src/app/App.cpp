@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <utility>
 
 namespace firmament {
@@ -97,7 +98,7 @@ DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderC
         if (options.shaderSource) throw Error("--shader-source: '" + options.shaderSource->string() + "' is not a folder");
         log::warning("shader hot reload: off (the HLSL folder " + (sourceRoot ? sourceRoot->string() : std::string("?")) +
                      " is not there; pass --shader-source)");
-    } else if (auto compiler = makeSourceCompiler(choice, *sourceRoot)) {
+    } else if (auto compiler = makeSourceCompiler(choice, *sourceRoot, compiled.cacheLauncher())) {
         log::info("shader hot reload: " + compiler->name() + " from " + sourceRoot->string());
         shaders.enableHotReload(std::move(compiler), *sourceRoot);
     } else {
@@ -197,7 +198,9 @@ void App::reloadShaders() {
     }
     const ReloadResult result = gpu_->shaders.reloadAll();
     if (result.failedTechniques.empty())
-        setNotice("reloaded " + std::to_string(result.shadersCompiled) + " shaders in " + std::to_string(static_cast<int>(result.milliseconds)) + " ms", false);
+        setNotice("reloaded " + std::to_string(result.shadersCompiled) + " shaders in " + std::to_string(static_cast<int>(result.milliseconds)) +
+                      " ms" + (result.shadersInBackground ? " (" + std::to_string(result.shadersInBackground) + " more in the background)" : ""),
+                  false);
     else
         setNotice("shader reload failed for " + std::to_string(result.failedTechniques.size()) + " technique(s): see the error window", true);
 }
@@ -239,6 +242,22 @@ int App::run() {
                            ? static_cast<int>(std::ceil(flight_->duration() / step - 1e-9)) + 1
                            : options_.frameCount();
     if (flight_) log::info("playing " + flight_->describe());
+    renderFrames(frames);
+    if (options_.capture && frames == 0) {  // a windowed run closed by the person: capture the last frame
+        renderFrame(options_.captureUi);
+        captureFrame();
+    }
+    if (options_.recordFlight) {
+        if (recording_.size() == 0 || timer_.totalSeconds() > recording_.duration() + 0.001)
+            recording_.add(timer_.totalSeconds(), state_.camera, state_.sun);  // where the flight ended
+        recording_.save(*options_.recordFlight);
+        log::info(recording_.describe() + " written to " + options_.recordFlight->string());
+    }
+    printTimings();
+    return soak_ ? soak_->finish(options_.soakResults()) : 0;
+}
+
+void App::renderFrames(int frames) {
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         if (!window_->processMessages()) break;
         if (window_->minimized()) {
@@ -275,18 +294,59 @@ int App::run() {
         if (!lost.empty()) recoverFromDeviceLoss(lost);
         if (soak_) soak_->afterFrame(frame, gpu_->device);
     }
-    if (options_.capture && frames == 0) {  // a windowed run closed by the person: capture the last frame
-        renderFrame(options_.captureUi);
-        captureFrame();
+}
+
+void App::captureView(const CaptureItem& view) {
+    const auto start = std::chrono::steady_clock::now();
+    options_.capture = view.png;
+    options_.captureUi = view.captureUi;
+    ensureWritable(options_.capturePng());
+    ensureWritable(options_.captureExr());
+    state_ = view.state;
+    timer_ = StepTimer{};
+    timer_.setFixedStep(options_.timeStep.value_or(1.0 / 60.0));  // a headless run's clock (App::App)
+    frameTimes_ = FrameTimeHistory{};
+    lastSourcePoll_ = 0.0;
+    notice_.clear();
+    noticeIsError_ = false;
+    gpu_->renderer.startOver();
+    gpu_->renderer.resize(view.width, view.height, true);
+    renderFrames(view.frames);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", seconds);
+    log::info("batch: " + view.id + ": " + std::to_string(view.frames) + " frame" + (view.frames == 1 ? "" : "s") + " at " +
+              std::to_string(view.width) + "x" + std::to_string(view.height) + " in " + text);
+}
+
+int App::runBatch(const std::vector<CaptureItem>& views) {
+    log::info("batch: " + std::to_string(views.size()) + " views, each from a fresh start");
+    for (const CaptureItem& view : views) captureView(view);
+    return 0;
+}
+
+int App::serveCaptures(const CaptureDefaults& defaults) {
+    log::info("batch: reading views from standard input, one a line, until it ends");
+    std::string line;
+    while (std::getline(std::cin, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) continue;
+        CaptureItem view;
+        try {
+            view = parseCaptureRequest(line, defaults);
+            ensureWritable(view.png);
+            ensureWritable(std::filesystem::path(view.png).replace_extension(".exr"));
+        } catch (const Error& e) {  // bad input: answered, and the next request is read
+            log::error(e.what());
+            std::printf("batch: refused %s: %s\n", captureRequestId(line).c_str(), e.what());
+            std::fflush(stdout);
+            continue;
+        }
+        captureView(view);
+        std::printf("batch: done %s\n", view.id.c_str());
+        std::fflush(stdout);
     }
-    if (options_.recordFlight) {
-        if (recording_.size() == 0 || timer_.totalSeconds() > recording_.duration() + 0.001)
-            recording_.add(timer_.totalSeconds(), state_.camera, state_.sun);  // where the flight ended
-        recording_.save(*options_.recordFlight);
-        log::info(recording_.describe() + " written to " + options_.recordFlight->string());
-    }
-    printTimings();
-    return soak_ ? soak_->finish(options_.soakResults()) : 0;
+    return 0;
 }
 
 void App::sleepWhileMinimized() {
@@ -318,6 +378,7 @@ void App::followWindowSize() {
 }
 
 void App::update() {
+    gpu_->shaders.beginFrame();  // in use from here on; background compiles swap in
     const double now = timer_.totalSeconds();
     const float dt = static_cast<float>(timer_.deltaSeconds());
     frameTimes_.add(dt * 1000.0f);

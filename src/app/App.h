@@ -2,6 +2,7 @@
 // The program: the window, the device and swap chain, input, the frame loop, flights,
 // captures and benchmarks. The frame itself, every technique and its order, is the Renderer's.
 #include "app/BenchmarkPlan.h"
+#include "app/CaptureBatch.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
 #include "app/SoakRun.h"
@@ -48,8 +49,19 @@ public:
     int run();                                         // returns the exit code
     // --benchmark: runs the plan's scenarios, prints the table, writes the JSON; the exit code.
     int runBenchmark(const BenchmarkPlan& plan);
+    // --batch FILE: captures each view from a fresh start (CaptureBatch.h); the exit code.
+    int runBatch(const std::vector<CaptureItem>& views);
+    // --batch -: the same for requests read one a line from standard input until it ends, each
+    // answered on standard output; a refused request is answered and the next one is read.
+    int serveCaptures(const CaptureDefaults& defaults);
 
 private:
+    // The frame loop: `frames` frames (0: until the window closes), with the flight's and
+    // --capture's captures due in them.
+    void renderFrames(int frames);
+    // One view of a batch: the state, the clock and the renderer as a fresh start has them,
+    // then its frames, the last captured into its files.
+    void captureView(const CaptureItem& view);
     void update();
     void renderFrame(bool drawGui);
     // The frame into --capture's files, or with `name` (a flight keyframe's) into PATH-name's.

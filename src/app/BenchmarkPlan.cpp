@@ -139,14 +139,7 @@ BenchmarkPlan parseBenchmarkPlan(const json& in, const State& defaults, const st
 }
 
 BenchmarkPlan loadBenchmarkPlan(const std::filesystem::path& path, const State& defaults) {
-    const auto bytes = readFileBytes(path);
-    json parsed;
-    try {
-        parsed = json::parse(bytes.begin(), bytes.end());
-    } catch (const json::exception& e) {  // parse_error, or out_of_range for a number too large for a double
-        throw SettingsError(path.string() + ": not valid JSON: " + e.what());
-    }
-    return parseBenchmarkPlan(parsed, defaults, path.string());
+    return parseBenchmarkPlan(parseJsonDocument(readFileBytes(path), path.string()), defaults, path.string());
 }
 
 }  // namespace firmament

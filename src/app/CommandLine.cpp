@@ -164,7 +164,8 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             o.noCache = true;
         } else if (flag == "--shader-source" || flag == "--settings" || flag == "--state-file" || flag == "--flight" ||
                    flag == "--record-flight" || flag == "--export-luts" || flag == "--cache-dir" || flag == "--benchmark" ||
-                   flag == "--benchmark-output" || flag == "--generate-cloud-scattering" || flag == "--soak" || flag == "--soak-report") {
+                   flag == "--benchmark-output" || flag == "--generate-cloud-scattering" || flag == "--soak" || flag == "--soak-report" ||
+                   flag == "--batch") {
             const auto v = value();
             if (!v) return result;
             if (v->empty()) {
@@ -182,6 +183,7 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
             else if (flag == "--generate-cloud-scattering") o.generateCloudScattering = std::filesystem::path(*v);
             else if (flag == "--soak") o.soak = std::filesystem::path(*v);
             else if (flag == "--soak-report") o.soakReport = std::filesystem::path(*v);
+            else if (flag == "--batch") o.batch = std::filesystem::path(*v);
             else o.stateFile = std::filesystem::path(*v);
         } else if (flag == "--set") {
             const auto v = value();
@@ -216,6 +218,21 @@ ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments) {
     } else if (o.benchmarkOutput) {
         result.error = "--benchmark-output needs --benchmark";
         return result;
+    }
+    if (o.batch) {
+        if (o.benchmark || o.soak || o.flight || o.recordFlight) {
+            result.error = "--batch renders its views each from a fresh start: leave out --benchmark, --soak, --flight and --record-flight";
+            return result;
+        }
+        if (*o.batch != "-" && !o.capture) {
+            result.error = "--batch " + o.batch->string() + " writes each view to --capture's PATH-name.png: give --capture PATH.png";
+            return result;
+        }
+        if (*o.batch == "-" && o.capture) {
+            result.error = "--batch - takes each capture's path from its request: leave out --capture";
+            return result;
+        }
+        o.headless = true;  // a batch runs unattended
     }
     if (o.soak && o.benchmark) {
         result.error = "--soak and --benchmark exclude each other";
@@ -274,6 +291,11 @@ Settings
   --flight FILE          play a recorded camera flight (JSON keyframes); headless
                          runs render its whole length unless --frames is given
   --record-flight FILE   write the camera and sun, ten keyframes a second, on exit
+  --batch FILE           headless: capture each view of FILE (views.json's form:
+                         name, settings, set, resolution, frames) from a fresh
+                         start into --capture's PATH-name.png and .exr
+  --batch -              the same for views read one a line (JSON, with "capture")
+                         from standard input, each answered "batch: done ID"
 Benchmark
   --benchmark FILE       run the scenario file's views x variants x resolutions
                          headless, print a table of GPU times per pass and write

@@ -43,6 +43,7 @@ struct Options {
     std::optional<std::filesystem::path> generateCloudScattering;  // compute the cloud particle's scattering table into this file and exit
     std::optional<std::filesystem::path> benchmark;     // a scenario file to run (implies headless)
     std::optional<std::filesystem::path> benchmarkOutput;  // the results' JSON (default benchmark-results.json)
+    std::optional<std::filesystem::path> batch;       // a list of views to capture, or "-" for requests on standard input (implies headless)
     std::optional<std::filesystem::path> soak;        // a soak schedule (tools/soak)
     std::optional<std::filesystem::path> soakReport;  // the soak's samples and verdict (default soak-report.json)
     bool help = false;

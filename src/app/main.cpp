@@ -2,6 +2,7 @@
 // message and a non-zero exit code (1 runtime error, 2 bad command line or settings).
 #include "app/App.h"
 #include "app/BenchmarkPlan.h"
+#include "app/CaptureBatch.h"
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
 #include "app/SoakSchedule.h"
@@ -66,12 +67,19 @@ int main() {
     std::optional<FlightPath> flight;
     std::optional<BenchmarkPlan> benchmark;
     std::optional<SoakSchedule> soak;
+    std::optional<CaptureDefaults> batchDefaults;
+    std::vector<CaptureItem> batch;
     try {
         if (parsed.options.flight) flight = FlightPath::load(*parsed.options.flight);
         if (parsed.options.settingsFile) loadStateFile(state, *parsed.options.settingsFile);
         if (parsed.options.vsync) state.display.vsync = *parsed.options.vsync;
         applyAssignments(state, parsed.options.assignments);
         if (parsed.options.benchmark) benchmark = loadBenchmarkPlan(*parsed.options.benchmark, state);
+        if (parsed.options.batch) {
+            batchDefaults = CaptureDefaults{state, parsed.options.width, parsed.options.height, parsed.options.frameCount(),
+                                            parsed.options.captureUi, parsed.options.capture.value_or(std::filesystem::path())};
+            if (*parsed.options.batch != "-") batch = loadCaptureBatch(*parsed.options.batch, *batchDefaults);
+        }
         if (parsed.options.soak) {
             soak = SoakSchedule::load(*parsed.options.soak);
             if (parsed.options.frameCount() == 0 || parsed.options.frameCount() < soak->framesNeeded())
@@ -85,7 +93,9 @@ int main() {
     }
     try {
         App app(parsed.options, state, std::move(flight), std::move(soak));
-        return benchmark ? app.runBenchmark(*benchmark) : app.run();
+        if (benchmark) return app.runBenchmark(*benchmark);
+        if (batchDefaults) return *parsed.options.batch == "-" ? app.serveCaptures(*batchDefaults) : app.runBatch(batch);
+        return app.run();
     } catch (const Error& e) {
         log::error(e.what());
     } catch (const std::exception& e) {

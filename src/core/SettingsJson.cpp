@@ -295,4 +295,12 @@ std::vector<std::string> settingKeys(std::span<const SettingsSection> sections) 
     return keys;
 }
 
+nlohmann::json parseJsonDocument(std::span<const std::uint8_t> bytes, const std::string& name) {
+    try {
+        return nlohmann::json::parse(bytes.begin(), bytes.end());
+    } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for a number too large for a double
+        throw SettingsError(name + ": not valid JSON: " + e.what());
+    }
+}
+
 }  // namespace firmament

@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace firmament {
@@ -19,6 +21,10 @@ public:
 };
 
 nlohmann::json settingsToJson(std::span<const SettingsSection> sections);
+
+// A whole file's bytes as JSON; throws SettingsError "NAME: not valid JSON: ..." (the parser's
+// line and column, or a number too large for a double).
+nlohmann::json parseJsonDocument(std::span<const std::uint8_t> bytes, const std::string& name);
 
 // `json` is an object of sections; reads into the sections, throws SettingsError.
 void settingsFromJson(const nlohmann::json& json, std::span<const SettingsSection> sections);

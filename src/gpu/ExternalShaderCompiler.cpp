@@ -8,6 +8,8 @@
 #include <windows.h>
 
 #include <atomic>
+#include <cstdlib>
+#include <vector>
 
 namespace firmament {
 
@@ -30,6 +32,11 @@ std::filesystem::path scratchFolder() {
     return folder;
 }
 
+std::string readText(const std::filesystem::path& path) {
+    const std::vector<std::uint8_t> bytes = readFileBytes(path);
+    return std::string(bytes.begin(), bytes.end());
+}
+
 }  // namespace
 
 std::string vkd3dWrapperSource(const ShaderKey& key) {
@@ -42,9 +49,16 @@ std::string vkd3dWrapperSource(const ShaderKey& key) {
 }
 
 std::string vkd3dShellCommand(const std::string& compiler, const std::string& root, const ShaderKey& key,
-                              const std::string& wrapper, const std::string& output) {
-    return "cd " + shellQuote(root) + " && " + shellQuote(compiler) + " -x hlsl -b dxbc-tpf -p " + shellQuote(key.profile) +
-           " -e " + shellQuote(key.entry) + " -o " + shellQuote(output) + " " + shellQuote(wrapper);
+                              const std::string& wrapper, const std::string& output, const std::string& cacheLauncher) {
+    const std::string launcher = cacheLauncher.empty() ? std::string() : "sh " + shellQuote(cacheLauncher) + " ";
+    return "cd " + shellQuote(root) + " && " + launcher + shellQuote(compiler) + " -x hlsl -b dxbc-tpf -p " +
+           shellQuote(key.profile) + " -e " + shellQuote(key.entry) + " -o " + shellQuote(output) + " " + shellQuote(wrapper);
+}
+
+std::string parallelJobsCommand(const std::vector<std::string>& jobScripts) {
+    std::string command = "printf '%s\\n'";
+    for (const std::string& job : jobScripts) command += " " + shellQuote(job);
+    return command + " | xargs -P \"$(nproc 2>/dev/null || echo 2)\" -n 1 sh";
 }
 
 std::wstring fxcCommandLine(const std::filesystem::path& fxc, const std::filesystem::path& root, const ShaderKey& key,
@@ -55,37 +69,35 @@ std::wstring fxcCommandLine(const std::filesystem::path& fxc, const std::filesys
     return line + L" /Fo " + quoteWindowsArgument(output.wstring()) + L" " + quoteWindowsArgument((root / key.file).wstring());
 }
 
-ExternalShaderCompiler::ExternalShaderCompiler(ExternalCompilerKind kind, std::filesystem::path program, std::filesystem::path root)
-    : kind_(kind), program_(std::move(program)), root_(std::move(root)), scratch_(scratchFolder()) {
+ExternalShaderCompiler::ExternalShaderCompiler(ExternalCompilerKind kind, std::filesystem::path program, std::filesystem::path root,
+                                               std::string cacheLauncher)
+    : kind_(kind), program_(std::move(program)), root_(std::move(root)), cacheLauncher_(std::move(cacheLauncher)), scratch_(scratchFolder()) {
     if (kind_ == ExternalCompilerKind::Vkd3dOnHost && !runningUnderWine())
         throw Error("the vkd3d shader compiler backend runs only under Wine; use d3dcompile or fxc on Windows");
 }
 
 std::string ExternalShaderCompiler::name() const {
-    return (kind_ == ExternalCompilerKind::Fxc ? "fxc (" : "vkd3d-compiler on the host (") + program_.string() + ")";
+    if (kind_ == ExternalCompilerKind::Fxc) return "fxc (" + program_.string() + ")";
+    return "vkd3d-compiler on the host (" + program_.string() + (cacheLauncher_.empty() ? "" : ", through the build's shader cache") + ")";
 }
 
 CompileResult ExternalShaderCompiler::compile(const ShaderKey& key) {
+    return kind_ == ExternalCompilerKind::Fxc ? compileWithFxc(key) : compileAllOnHost({key}).front();
+}
+
+std::vector<CompileResult> ExternalShaderCompiler::compileAll(const std::vector<ShaderKey>& keys) {
+    if (kind_ == ExternalCompilerKind::Fxc) return ShaderCompiler::compileAll(keys);  // a process per shader, on each core
+    return keys.empty() ? std::vector<CompileResult>{} : compileAllOnHost(keys);
+}
+
+CompileResult ExternalShaderCompiler::compileWithFxc(const ShaderKey& key) {
     static std::atomic<unsigned> counter{0};
-    const std::string stem = "shader-" + std::to_string(counter++);
-    const auto output = scratch_ / (stem + ".cso");
+    const auto output = scratch_ / ("shader-" + std::to_string(counter++) + ".cso");
     std::error_code ec;
     std::filesystem::remove(output, ec);
     CompileResult result;
     try {
-        ChildResult run;
-        if (kind_ == ExternalCompilerKind::Vkd3dOnHost) {
-            const auto wrapper = scratch_ / (stem + ".hlsl");
-            const std::string text = vkd3dWrapperSource(key);
-            writeFileText(wrapper, text);
-            const auto hostRoot = hostPath(root_), hostWrapper = hostPath(wrapper), hostOutput = hostPath(output);
-            if (!hostRoot || !hostWrapper || !hostOutput) throw Error("no host path for the shader folders");
-            run = runHostShellCommand(vkd3dShellCommand(program_.generic_string(), *hostRoot, key, *hostWrapper, *hostOutput),
-                                      scratch_, kCompileTimeoutMs);
-            std::filesystem::remove(wrapper, ec);
-        } else {
-            run = runWindowsProgram(fxcCommandLine(program_, root_, key, output), root_, kCompileTimeoutMs);
-        }
+        const ChildResult run = runWindowsProgram(fxcCommandLine(program_, root_, key, output), root_, kCompileTimeoutMs);
         result.log = run.output;
         if (run.exitCode == 0 && std::filesystem::exists(output, ec)) {
             result.bytecode = readFileBytes(output);
@@ -98,6 +110,60 @@ CompileResult ExternalShaderCompiler::compile(const ShaderKey& key) {
     }
     std::filesystem::remove(output, ec);
     return result;
+}
+
+// Every permutation gets a wrapper (its defines, then the source), a job script that compiles
+// it and writes the compiler's messages and exit status beside it, and one host command runs
+// the jobs on every core.
+std::vector<CompileResult> ExternalShaderCompiler::compileAllOnHost(const std::vector<ShaderKey>& keys) {
+    static std::atomic<unsigned> counter{0};
+    struct Job {
+        std::filesystem::path wrapper, output, script, log, status;
+    };
+    std::vector<Job> jobs;
+    std::vector<CompileResult> results(keys.size());
+    std::error_code ec;
+    try {
+        const auto hostRoot = hostPath(root_);
+        if (!hostRoot) throw Error("no host path for the shader folder " + root_.string());
+        std::vector<std::string> hostScripts;
+        for (const ShaderKey& key : keys) {
+            const std::string stem = "shader-" + std::to_string(counter++);
+            Job job{scratch_ / (stem + ".hlsl"), scratch_ / (stem + ".cso"), scratch_ / (stem + ".sh"), scratch_ / (stem + ".log"),
+                    scratch_ / (stem + ".status")};
+            jobs.push_back(job);
+            const auto hostWrapper = hostPath(job.wrapper), hostOutput = hostPath(job.output), hostLog = hostPath(job.log),
+                       hostStatus = hostPath(job.status), hostScript = hostPath(job.script);
+            if (!hostWrapper || !hostOutput || !hostLog || !hostStatus || !hostScript) throw Error("no host path for the shader scratch folder");
+            writeFileText(job.wrapper, vkd3dWrapperSource(key));
+            writeFileText(job.script, "(" + vkd3dShellCommand(program_.generic_string(), *hostRoot, key, *hostWrapper, *hostOutput, cacheLauncher_) +
+                                          ") >" + shellQuote(*hostLog) + " 2>&1\necho $? >" + shellQuote(*hostStatus) + "\n");
+            hostScripts.push_back(*hostScript);
+        }
+        const int timeout = kCompileTimeoutMs + 2'000 * static_cast<int>(keys.size());
+        const ChildResult run = runHostShellCommand(parallelJobsCommand(hostScripts), scratch_, timeout);
+        for (size_t i = 0; i < keys.size(); ++i) {
+            CompileResult& result = results[i];
+            const Job& job = jobs[i];
+            const int exitCode = std::filesystem::exists(job.status, ec) ? std::atoi(readText(job.status).c_str()) : -1;
+            if (std::filesystem::exists(job.log, ec)) result.log = readText(job.log);
+            if (exitCode == 0 && std::filesystem::exists(job.output, ec)) {
+                result.bytecode = readFileBytes(job.output);
+                result.ok = !result.bytecode.empty();
+            }
+            if (!result.ok && result.log.empty())
+                result.log = exitCode < 0 ? "the compiler did not run: " + run.output
+                                          : "the compiler failed with exit code " + std::to_string(exitCode);
+        }
+    } catch (const Error& e) {
+        for (CompileResult& result : results) {
+            result.ok = false;
+            result.log = e.what();
+        }
+    }
+    for (const Job& job : jobs)
+        for (const auto& file : {job.wrapper, job.output, job.script, job.log, job.status}) std::filesystem::remove(file, ec);
+    return results;
 }
 
 }  // namespace firmament

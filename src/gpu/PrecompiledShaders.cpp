@@ -23,6 +23,10 @@ PrecompiledShaders::PrecompiledShaders(std::filesystem::path folder) : folder_(s
             sourceRoot_ = std::filesystem::path(line.substr(tab + 1));
             continue;
         }
+        if (line.compare(0, tab, "#cache") == 0) {
+            cacheLauncher_ = line.substr(tab + 1);
+            continue;
+        }
         files_[line.substr(0, tab)] = line.substr(tab + 1);
     }
 }

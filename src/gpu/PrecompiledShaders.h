@@ -20,11 +20,15 @@ public:
     size_t size() const { return files_.size(); }
     // The HLSL folder these were compiled from (the manifest's "#source" line), for hot reload.
     const std::optional<std::filesystem::path>& sourceRoot() const { return sourceRoot_; }
+    // The build's compiled-shader cache launcher (the manifest's "#cache" line, a host path),
+    // empty when the build used none.
+    const std::string& cacheLauncher() const { return cacheLauncher_; }
 
 private:
     std::filesystem::path folder_;
-    std::map<std::string, std::string> files_;
-    std::optional<std::filesystem::path> sourceRoot_;  // key id -> .cso file name
+    std::map<std::string, std::string> files_;  // key id -> .cso file name
+    std::optional<std::filesystem::path> sourceRoot_;
+    std::string cacheLauncher_;
 };
 
 }  // namespace firmament

@@ -19,6 +19,13 @@ bool hostVkd3dPresent() {
     return std::filesystem::exists(std::filesystem::path(L"Z:\\usr\\bin\\vkd3d-compiler"), ec);
 }
 
+// The build's cache launcher, if the host has it at that path (a program copied elsewhere may not).
+std::string presentLauncher(const std::string& launcher) {
+    std::error_code ec;
+    if (launcher.empty() || !runningUnderWine() || !std::filesystem::is_regular_file(std::filesystem::path("Z:" + launcher), ec)) return {};
+    return launcher;
+}
+
 std::optional<std::filesystem::path> fxcOnPath() {
     wchar_t found[MAX_PATH];
     const DWORD length = SearchPathW(nullptr, L"fxc.exe", nullptr, MAX_PATH, found, nullptr);
@@ -37,7 +44,8 @@ std::optional<SourceCompilerChoice> parseSourceCompilerChoice(std::string_view n
     return std::nullopt;
 }
 
-std::unique_ptr<ShaderCompiler> makeSourceCompiler(SourceCompilerChoice choice, const std::filesystem::path& root) {
+std::unique_ptr<ShaderCompiler> makeSourceCompiler(SourceCompilerChoice choice, const std::filesystem::path& root,
+                                                   const std::string& cacheLauncher) {
     switch (choice) {
         case SourceCompilerChoice::None:
             return nullptr;
@@ -45,7 +53,7 @@ std::unique_ptr<ShaderCompiler> makeSourceCompiler(SourceCompilerChoice choice, 
             return std::make_unique<D3DCompileShaders>(root);
         case SourceCompilerChoice::Vkd3d:
             if (!hostVkd3dPresent()) throw Error(std::string("--shader-compiler vkd3d needs Wine and ") + kHostVkd3d + " on the host");
-            return std::make_unique<ExternalShaderCompiler>(ExternalCompilerKind::Vkd3dOnHost, kHostVkd3d, root);
+            return std::make_unique<ExternalShaderCompiler>(ExternalCompilerKind::Vkd3dOnHost, kHostVkd3d, root, presentLauncher(cacheLauncher));
         case SourceCompilerChoice::Fxc: {
             const auto fxc = fxcOnPath();
             if (!fxc) throw Error("--shader-compiler fxc: fxc.exe is not on PATH (it ships with the Windows SDK)");
@@ -54,7 +62,7 @@ std::unique_ptr<ShaderCompiler> makeSourceCompiler(SourceCompilerChoice choice, 
         case SourceCompilerChoice::Auto:
             // Under Wine its own d3dcompiler_47 lacks features our shaders use: prefer the
             // build's compiler on the host.
-            if (hostVkd3dPresent()) return std::make_unique<ExternalShaderCompiler>(ExternalCompilerKind::Vkd3dOnHost, kHostVkd3d, root);
+            if (hostVkd3dPresent()) return std::make_unique<ExternalShaderCompiler>(ExternalCompilerKind::Vkd3dOnHost, kHostVkd3d, root, presentLauncher(cacheLauncher));
             if (D3DCompileShaders::available()) return std::make_unique<D3DCompileShaders>(root);
             if (const auto fxc = fxcOnPath()) return std::make_unique<ExternalShaderCompiler>(ExternalCompilerKind::Fxc, *fxc, root);
             return nullptr;

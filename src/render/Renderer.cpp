@@ -26,6 +26,7 @@ Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLib
     : device_(device),
       context_(context),
       shaders_(shaders),
+      tables_(tables),
       profiler_(device, context),
       frameConstants_(device),
       orientationGrid_(std::make_unique<OrientationGridPass>(device)),
@@ -38,6 +39,20 @@ Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLib
       toneMapping_(std::make_unique<ToneMapping>(device)) {}
 
 Renderer::~Renderer() = default;
+
+void Renderer::startOver() {
+    // The techniques' GPU objects go before their replacements are made (the clouds' pools are large).
+    orientationGrid_.reset();
+    shadows_.reset();
+    lightShafts_.reset();
+    clouds_.reset();
+    toneMapping_.reset();
+    orientationGrid_ = std::make_unique<OrientationGridPass>(device_);
+    shadows_ = std::make_unique<CascadedShadowMaps>(device_);
+    lightShafts_ = std::make_unique<LightShafts>(device_);
+    clouds_ = std::make_unique<Clouds>(device_, tables_);
+    toneMapping_ = std::make_unique<ToneMapping>(device_);
+}
 
 void Renderer::resize(int width, int height, bool ownOutput) { targets_.resize(device_, width, height, ownOutput); }
 

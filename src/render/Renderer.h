@@ -60,6 +60,14 @@ public:
     // (headless runs; a window renders into its swap chain's back buffer).
     void resize(int width, int height, bool ownOutput);
 
+    // As a fresh start would find it, for a batch of captures (--batch): every technique that
+    // keeps something from one frame to the next is made again (the exposure's adaptation and
+    // its delayed read-back, the clouds' grown pools, sort order and loaded tables, the
+    // cascades, the light shafts' targets). Kept: the profiler's statistics, the atmosphere's
+    // tables and the terrain's height field, which depend only on their parameters (each frame
+    // checks them, and loads or computes what a new process would load from the cache).
+    void startOver();
+
     // One frame of `state` into `output` (the renderer's own when null), every pass in frame
     // order; `drawGui`, when given, is the last pass. `finishWorkNow`: work that is spread over
     // frames (the tables) completes in this one.
@@ -91,6 +99,7 @@ private:
     ID3D11Device* device_;
     ID3D11DeviceContext* context_;
     ShaderLibrary& shaders_;
+    TableStorage tables_;  // where the techniques' tables are cached (startOver makes the clouds again)
     GpuProfiler profiler_;
     FrameTargets targets_;
     ConstantBuffer<gpu::FrameConstants> frameConstants_;

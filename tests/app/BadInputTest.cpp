@@ -37,6 +37,19 @@ TEST(BadInput, CaptureWithAnUnknownExtension) {
     expectFailure({L"--headless", L"--capture", L"shot.bmp"}, 2, "must end in .png or .exr");
 }
 
+TEST(BadInput, BatchNeedsItsCapturePathAndAGoodViewsFile) {
+    expectFailure({L"--batch", L"views.json"}, 2, "--batch views.json writes each view to --capture's PATH-name.png");
+    expectFailure({L"--batch", L"-", L"--capture", L"x.png"}, 2, "--batch - takes each capture's path from its request");
+    expectFailure({L"--batch", L"-", L"--benchmark", L"b.json"}, 2, "leave out --benchmark");
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-bad-batch";
+    std::filesystem::create_directories(folder);
+    expectFailure({L"--batch", (folder / "missing.json").wstring(), L"--capture", (folder / "x.png").wstring()}, 2, "missing.json");
+    std::ofstream(folder / "twice.json") << R"({"views": [{"name": "a"}, {"name": "a"}]})";
+    expectFailure({L"--batch", (folder / "twice.json").wstring(), L"--capture", (folder / "x.png").wstring()}, 2,
+                  "views[1].name: 'a' is used twice");
+    std::filesystem::remove_all(folder);
+}
+
 TEST(BadInput, MissingShaderFolder) {
     expectFailure({L"--headless", L"--frames", L"1", L"--shader-dir", L"no-such-folder"}, 1,
                   "shader folder 'no-such-folder' does not exist");

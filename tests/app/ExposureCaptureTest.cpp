@@ -5,7 +5,7 @@
 //  - a static view's capture does not depend on how many frames were rendered before it: the
 //    adaptation starts adapted, and the first frame uses its own measurement.
 #include "core/PngImage.h"
-#include "support/Process.h"
+#include "support/HeadlessCapture.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -25,11 +25,7 @@ constexpr int kWidth = 240, kHeight = 135;
 Rgba8Image capture(const std::string& name, const std::vector<std::wstring>& settings, int frames) {
     const auto folder = std::filesystem::temp_directory_path() / ("firmament-exposure-" + name);
     std::filesystem::remove_all(folder);
-    std::vector<std::wstring> arguments{L"--headless", L"--frames", std::to_wstring(frames), L"--resolution",
-                                        std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight)};
-    for (const std::wstring& s : settings) arguments.insert(arguments.end(), {L"--set", s});
-    arguments.insert(arguments.end(), {L"--capture", (folder / "frame.png").wstring()});
-    const ProcessResult run = runProcess(firmamentExe(), arguments);
+    const ProcessResult run = captureHeadless({{}, settings, kWidth, kHeight, frames, folder / "frame.png"});
     EXPECT_EQ(run.exitCode, 0u) << run.output;
     if (run.exitCode != 0) return {};
     Rgba8Image image = readPng(folder / "frame.png");

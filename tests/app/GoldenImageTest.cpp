@@ -1,5 +1,5 @@
-// Golden images: the canonical views of tests/golden/views.json, each captured headless by
-// firmament.exe and compared with the committed tests/golden/<name>.png. The tolerance is the
+// Golden images: the canonical views of tests/golden/views.json, each captured headless
+// (HeadlessCapture.h: every view of the test process through one firmament.exe) and compared with the committed tests/golden/<name>.png. The tolerance is the
 // file's (PSNR over RGB and the largest difference of any channel, in 8-bit steps). A failure
 // writes the captured image and an amplified difference image into test-output/golden/ and
 // names them. With FIRMAMENT_UPDATE_GOLDENS=1 the captures are written to
@@ -7,7 +7,7 @@
 // tests/golden/ (docs/building.md, "Golden images").
 #include "core/PngImage.h"
 #include "support/ImageComparison.h"
-#include "support/Process.h"
+#include "support/HeadlessCapture.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -76,11 +76,8 @@ TEST_P(GoldenImage, MatchesTheCommittedImage) {
     const auto scratch = std::filesystem::temp_directory_path() / ("firmament-golden-" + name);
     std::filesystem::remove_all(scratch);
     std::filesystem::create_directories(scratch);
-    std::ofstream(scratch / "view.json") << (*view)["settings"].dump(2);
-    const std::wstring resolution = std::to_wstring(views["resolution"][0].get<int>()) + L"x" + std::to_wstring(views["resolution"][1].get<int>());
-    const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--frames", std::to_wstring(views["frames"].get<int>()), L"--resolution",
-                                                          resolution, L"--settings", (scratch / "view.json").wstring(), L"--capture",
-                                                          (scratch / "capture.png").wstring()});
+    const ProcessResult run = captureHeadless({(*view)["settings"], {}, views["resolution"][0].get<int>(), views["resolution"][1].get<int>(),
+                                               views["frames"].get<int>(), scratch / "capture.png"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     const Rgba8Image captured = readPng(scratch / "capture.png");
     std::filesystem::remove_all(scratch);

@@ -2,7 +2,7 @@
 // left half and Bruneton's on its right, pixel for pixel; a difference frame is the absolute
 // difference of the two. All compared in the captured EXR, before tone mapping.
 #include "core/ExrImage.h"
-#include "support/Process.h"
+#include "support/HeadlessCapture.h"
 #include "support/TestPaths.h"
 
 #include <Imath/half.h>
@@ -16,16 +16,15 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 40;
 
-// A small headless capture over the orientation grid at sunset, with `extra` settings. The
+// A small headless capture over the orientation grid at sunset, with `extra` --set assignments. The
 // terrain is off unless `extra` turns it on; the light shafts are off, so that Yusov's frame is
 // drawn by the atmosphere's passes, as the comparison views draw it.
 ExrFile capture(const std::filesystem::path& folder, const std::string& name, std::vector<std::wstring> extra) {
-    std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
-                                   L"--set", L"camera.pitch=2", L"--set", L"sun.elevation=8", L"--set", L"atmosphere.lutResolution=small (8x32x16x8)",
-                                   L"--set", L"terrain.enabled=off", L"--set", L"lightShafts.enabled=off", L"--set", L"clouds.enabled=off", L"--capture",
-                                   (folder / (name + ".png")).wstring()};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const ProcessResult run = runProcess(firmamentExe(), args);
+    HeadlessCapture c{{}, {L"camera.pitch=2", L"sun.elevation=8", L"atmosphere.lutResolution=small (8x32x16x8)", L"terrain.enabled=off",
+                           L"lightShafts.enabled=off", L"clouds.enabled=off"},
+                      kWidth, kHeight, 1, folder / (name + ".png")};
+    c.settings.insert(c.settings.end(), extra.begin(), extra.end());
+    const ProcessResult run = captureHeadless(c);
     EXPECT_EQ(run.exitCode, 0u) << run.output;
     return readExr(folder / (name + ".exr"));
 }
@@ -39,10 +38,10 @@ float channel(const ExrFile& file, int x, int y, int c) {
 TEST(ModelComparison, SplitAndDifferenceViewsAreMadeOfBothModels) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-model-comparison";
     std::filesystem::remove_all(folder);
-    const ExrFile yusov = capture(folder, "yusov", {L"--set", L"atmosphere.model=Yusov 2013"});
-    const ExrFile bruneton = capture(folder, "bruneton", {L"--set", L"atmosphere.model=Bruneton 2008"});
-    const ExrFile split = capture(folder, "split", {L"--set", L"atmosphere.comparison=split"});
-    const ExrFile difference = capture(folder, "difference", {L"--set", L"atmosphere.comparison=difference"});
+    const ExrFile yusov = capture(folder, "yusov", {L"atmosphere.model=Yusov 2013"});
+    const ExrFile bruneton = capture(folder, "bruneton", {L"atmosphere.model=Bruneton 2008"});
+    const ExrFile split = capture(folder, "split", {L"atmosphere.comparison=split"});
+    const ExrFile difference = capture(folder, "difference", {L"atmosphere.comparison=difference"});
     ASSERT_EQ(std::get<std::string>(split.attributes.at("firmament.atmosphere.comparison")), "Split");
     ASSERT_EQ(std::get<std::string>(bruneton.attributes.at("firmament.atmosphere.model")), "Bruneton 2008");
 
@@ -67,12 +66,11 @@ TEST(ModelComparison, SplitAndDifferenceViewsAreMadeOfBothModels) {
 TEST(ModelComparison, SplitViewLightsTheTerrainByEachModel) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-model-comparison-terrain";
     std::filesystem::remove_all(folder);
-    const std::vector<std::wstring> terrain{L"--set", L"terrain.enabled=on", L"--set", L"camera.position=0,3000,0", L"--set", L"camera.pitch=-20",
-                                            L"--set", L"camera.yaw=40"};
+    const std::vector<std::wstring> terrain{L"terrain.enabled=on", L"camera.position=0,3000,0", L"camera.pitch=-20", L"camera.yaw=40"};
     const auto with = [&](const wchar_t* setting) {
-        std::vector<std::wstring> args = terrain;
-        args.insert(args.end(), {L"--set", setting});
-        return args;
+        std::vector<std::wstring> settings = terrain;
+        settings.push_back(setting);
+        return settings;
     };
     const ExrFile yusov = capture(folder, "yusov", with(L"atmosphere.model=Yusov 2013"));
     const ExrFile bruneton = capture(folder, "bruneton", with(L"atmosphere.model=Bruneton 2008"));

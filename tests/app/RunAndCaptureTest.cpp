@@ -3,6 +3,7 @@
 #include "core/ExrImage.h"
 #include "core/PngImage.h"
 #include "postfx/ToneMappingCurves.h"
+#include "support/HeadlessCapture.h"
 #include "support/Process.h"
 #include "support/TestPaths.h"
 
@@ -32,6 +33,16 @@ void expectNotUniform(const Rgba8Image& image) {
     const size_t pixels = image.pixels.size() / 4;
     EXPECT_GE(histogram.size(), 3u);
     EXPECT_GT(pixels - mostCommon, pixels / 100) << "the captured frame is (nearly) uniform";
+}
+
+// A cheap scene for the tests of plumbing (panels, flights, operators): the sky and the
+// orientation grid, without the clouds (seconds a frame on the CPU, whatever the image size)
+// and the terrain (its height field loaded at every start).
+const std::vector<std::wstring> kCheapScene{L"--set", L"clouds.enabled=off", L"--set", L"terrain.enabled=off"};
+
+std::vector<std::wstring> withCheapScene(std::vector<std::wstring> arguments) {
+    arguments.insert(arguments.end(), kCheapScene.begin(), kCheapScene.end());
+    return arguments;
 }
 
 Imath::half halfAt(const ExrFile& file, int x, int y, int channel) {
@@ -136,10 +147,10 @@ TEST(HeadlessRun, EveryToneMappingOperatorIsSelectableAndRecorded) {
     for (const std::string_view name : kToneMapOperatorNames) {
         const std::wstring wide(name.begin(), name.end());
         const auto png = folder / (L"op" + std::to_wstring(images.size()) + L".png");
-        const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--frames", L"2", L"--resolution", L"128x96", L"--set",
-                                                              L"toneMapping.operator=" + wide, L"--set", L"camera.pitch=-5",
-                                                              L"--set", L"toneMapping.autoExposure=off", L"--set",
-                                                              L"toneMapping.exposure=-1.5", L"--capture", png.wstring()});
+        const ProcessResult run = captureHeadless({{},
+                                                   {L"toneMapping.operator=" + wide, L"camera.pitch=-5", L"toneMapping.autoExposure=off",
+                                                    L"toneMapping.exposure=-1.5", L"clouds.enabled=off", L"terrain.enabled=off"},
+                                                   128, 96, 2, png});
         ASSERT_EQ(run.exitCode, 0u) << run.output;
         const ExrFile file = readExr(std::filesystem::path(png).replace_extension(".exr"));
         EXPECT_EQ(std::get<std::string>(file.attributes.at("firmament.toneMapping.operator")), name);
@@ -158,18 +169,18 @@ TEST(HeadlessRun, EveryToneMappingOperatorIsSelectableAndRecorded) {
 TEST(HeadlessRun, EveryPanelIsDrawnAndCapturedWithCaptureUi) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-panels-test";
     std::filesystem::remove_all(folder);
-    auto capture = [&](const std::wstring& name, std::vector<std::wstring> extra) {
-        std::vector<std::wstring> args{L"--headless", L"--frames", L"3", L"--resolution", L"640x480", L"--capture",
-                                       (folder / (name + L".png")).wstring()};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const ProcessResult run = runProcess(firmamentExe(), args);
+    auto capture = [&](const std::wstring& name, std::vector<std::wstring> settings, bool gui) {
+        settings.insert(settings.end(), {L"clouds.enabled=off", L"terrain.enabled=off"});  // a cheap scene
+        HeadlessCapture c{nullptr, settings, 640, 480, 3, folder / (name + L".png")};
+        c.captureUi = gui;
+        const ProcessResult run = captureHeadless(c);
         EXPECT_EQ(run.exitCode, 0u) << run.output;
         return readPng(folder / (name + L".png"));
     };
-    const Rgba8Image plain = capture(L"no-gui", {});
+    const Rgba8Image plain = capture(L"no-gui", {}, false);
     std::vector<Rgba8Image> panels;
     for (const wchar_t* panel : {L"basic", L"additional", L"tone mapping", L"performance"}) {
-        panels.push_back(capture(std::wstring(L"panel-") + panel[0], {L"--capture-ui", L"--set", std::wstring(L"ui.panel=") + panel}));
+        panels.push_back(capture(std::wstring(L"panel-") + panel[0], {std::wstring(L"ui.panel=") + panel}, true));
         const Rgba8Image& withGui = panels.back();
         size_t differing = 0;
         for (size_t i = 0; i < plain.pixels.size(); ++i) differing += plain.pixels[i] != withGui.pixels[i];
@@ -178,7 +189,7 @@ TEST(HeadlessRun, EveryPanelIsDrawnAndCapturedWithCaptureUi) {
     for (size_t a = 0; a < panels.size(); ++a)
         for (size_t b = a + 1; b < panels.size(); ++b) EXPECT_NE(panels[a].pixels, panels[b].pixels) << a << " and " << b;
     // The help window (F1, or ui.help) is drawn over the scene too.
-    const Rgba8Image help = capture(L"help", {L"--capture-ui", L"--set", L"ui.help=on"});
+    const Rgba8Image help = capture(L"help", {L"ui.help=on"}, true);
     EXPECT_NE(help.pixels, panels[0].pixels);
     std::filesystem::remove_all(folder);
 }
@@ -193,9 +204,9 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
         {"time": 0.5, "camera": {"position": [0, 2100, 1000], "yaw": 90}}],
         "captures": [{"time": 0, "name": "first"}, {"time": 0.25, "name": "middle"}, {"time": 0.5, "name": "last"}]})";
     const ProcessResult run =
-        runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
-                                    L"--record-flight", (folder / "recorded.json").wstring(), L"--capture",
-                                    (folder / "end.png").wstring()});
+        runProcess(firmamentExe(), withCheapScene({L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
+                                                   L"--record-flight", (folder / "recorded.json").wstring(), L"--capture",
+                                                   (folder / "end.png").wstring()}));
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("GPU time per pass over 31 frames"), std::string::npos) << run.output;  // 0.5 s at 60 Hz, both ends
     // The last frame is the last keyframe: the view matrix moves (0, 2100, 1000) to the origin.
@@ -220,8 +231,8 @@ TEST(HeadlessRun, PlaysAFlightAndRecordsOne) {
     // With --time-step the flight is flown at that step (tools/demo's 10 frames a second): 0.5 s
     // in steps of 0.125 s is 5 frames, both ends, with the same views at the captures' times.
     const ProcessResult coarse =
-        runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
-                                    L"--time-step", L"0.125", L"--capture", (folder / "coarse.png").wstring()});
+        runProcess(firmamentExe(), withCheapScene({L"--headless", L"--resolution", L"64x64", L"--flight", (folder / "flight.json").wstring(),
+                                                   L"--time-step", L"0.125", L"--capture", (folder / "coarse.png").wstring()}));
     ASSERT_EQ(coarse.exitCode, 0u) << coarse.output;
     EXPECT_NE(coarse.output.find("GPU time per pass over 5 frames"), std::string::npos) << coarse.output;
     EXPECT_EQ(std::get<glm::mat4>(readExr(folder / "coarse.exr").attributes.at("firmament.view")), view);
@@ -240,8 +251,9 @@ TEST(HeadlessRun, AOneKeyframeFlightSetsTheCameraAndSunExactly) {
         std::ofstream(folder / "view.json") << R"({"keyframes": [{"time": )" << time << R"(,
             "camera": {"position": [1200, 2600, -3400], "yaw": 135, "pitch": -12},
             "sun": {"elevation": 14, "azimuth": -150}}]})";
-        const ProcessResult run = runProcess(firmamentExe(), {L"--headless", L"--resolution", L"64x64", L"--frames", L"3", L"--flight",
-                                                              (folder / "view.json").wstring(), L"--capture", (folder / "view.png").wstring()});
+        const ProcessResult run =
+            runProcess(firmamentExe(), withCheapScene({L"--headless", L"--resolution", L"64x64", L"--frames", L"3", L"--flight",
+                                                       (folder / "view.json").wstring(), L"--capture", (folder / "view.png").wstring()}));
         ASSERT_EQ(run.exitCode, 0u) << run.output;
         EXPECT_NE(run.output.find("playing a still view (one keyframe)"), std::string::npos) << run.output;
         const auto settings = nlohmann::json::parse(std::get<std::string>(readExr(folder / "view.exr").attributes.at("firmament.settings")));

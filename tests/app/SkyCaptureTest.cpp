@@ -5,8 +5,7 @@
 // view rays are rebuilt from its matrices as the program builds them.
 #include "atmosphere/ReferenceAtmosphere.h"
 #include "core/ExrImage.h"
-#include "support/Process.h"
-#include "support/TestPaths.h"
+#include "support/HeadlessCapture.h"
 
 #include <Imath/half.h>
 #include <gtest/gtest.h>
@@ -44,16 +43,17 @@ struct SkySample {
 std::vector<SkySample> captureSky(const std::string& tag, const std::vector<std::wstring>& settings, double altitude, double pitch) {
     const auto folder = std::filesystem::temp_directory_path() / ("firmament-sky-" + tag);
     std::filesystem::remove_all(folder);
-    std::vector<std::wstring> arguments{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight),
-                                        L"--set", L"scene.orientationGrid=off", L"--set", L"terrain.enabled=off",
-                                        L"--set", L"camera.position=0," + std::to_wstring(altitude) + L",0", L"--set", L"camera.pitch=" + std::to_wstring(pitch),
-                                        L"--set", L"camera.fieldOfView=70", L"--set", L"sun.azimuth=20", L"--set", L"atmosphere.sunIntensity=2",
-                                        L"--set", L"atmosphere.multipleScattering=none", L"--set", L"atmosphere.scatteringOrders=1",
-                                        // The atmosphere's own passes, per pixel (the light shafts are held to them elsewhere).
-                                        L"--set", L"lightShafts.enabled=off", L"--set", L"clouds.enabled=off"};
-    for (const std::wstring& s : settings) arguments.insert(arguments.end(), {L"--set", s});
-    arguments.insert(arguments.end(), {L"--capture", (folder / "sky.png").wstring()});
-    const ProcessResult run = runProcess(firmamentExe(), arguments);
+    HeadlessCapture capture;
+    capture.settings = {L"scene.orientationGrid=off", L"terrain.enabled=off", L"camera.position=0," + std::to_wstring(altitude) + L",0",
+                        L"camera.pitch=" + std::to_wstring(pitch), L"camera.fieldOfView=70", L"sun.azimuth=20", L"atmosphere.sunIntensity=2",
+                        L"atmosphere.multipleScattering=none", L"atmosphere.scatteringOrders=1",
+                        // The atmosphere's own passes, per pixel (the light shafts are held to them elsewhere).
+                        L"lightShafts.enabled=off", L"clouds.enabled=off"};
+    capture.settings.insert(capture.settings.end(), settings.begin(), settings.end());
+    capture.width = kWidth;
+    capture.height = kHeight;
+    capture.png = folder / "sky.png";
+    const ProcessResult run = captureHeadless(capture);
     EXPECT_EQ(run.exitCode, 0u) << run.output;
     if (run.exitCode != 0) return {};
     const ExrFile file = readExr(folder / "sky.exr");

@@ -2,8 +2,7 @@
 // background pixel below the horizon), nothing is NaN or Inf at any sun angle with either
 // atmosphere model, and the terrain's views and the cascades' tint change the picture.
 #include "core/ExrImage.h"
-#include "support/Process.h"
-#include "support/TestPaths.h"
+#include "support/HeadlessCapture.h"
 
 #include <Imath/half.h>
 #include <gtest/gtest.h>
@@ -30,12 +29,13 @@ std::filesystem::path scratch(const std::string& name) {
 // One headless frame with the given --set assignments; its HDR capture.
 ExrFile captureFrame(const std::string& name, const std::vector<std::wstring>& settings) {
     const auto folder = scratch(name);
-    // The terrain alone under the atmosphere: no clouds in front of it.
-    std::vector<std::wstring> arguments{L"--headless", L"--frames", L"1", L"--resolution",
-                                        std::to_wstring(kWidth) + L"x" + std::to_wstring(kHeight), L"--set", L"clouds.enabled=off"};
-    for (const auto& s : settings) arguments.insert(arguments.end(), {L"--set", s});
-    arguments.insert(arguments.end(), {L"--capture", (folder / "frame.png").wstring()});
-    const ProcessResult run = runProcess(firmamentExe(), arguments);
+    HeadlessCapture capture;
+    capture.settings = {L"clouds.enabled=off"};  // the terrain alone under the atmosphere: no clouds in front of it
+    capture.settings.insert(capture.settings.end(), settings.begin(), settings.end());
+    capture.width = kWidth;
+    capture.height = kHeight;
+    capture.png = folder / "frame.png";
+    const ProcessResult run = captureHeadless(capture);
     EXPECT_EQ(run.exitCode, 0u) << run.output;
     ExrFile file = readExr(folder / "frame.exr");
     std::filesystem::remove_all(folder);

@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cctype>
 #include <fstream>
 #include <map>
@@ -338,10 +340,18 @@ TEST(Window, F8ReloadsASavedEditAndABrokenEditKeepsTheOldShaderAndShowsTheError)
     // A saved edit that swaps red and blue: after F8 the frame is the old one with them swapped.
     std::string swapped = original;
     swapped.replace(swapped.find(ending), ending.size(), "return float4(display.bgr, 1.0);");
+    // The time from saving to the new frame is reported, not asserted (a shared machine's
+    // wall clock is no measure to fail on); the goal is 3 s (docs/controls.md).
+    const auto saved = std::chrono::steady_clock::now();
     writeText(toneMapping, swapped);
     pressKey(window.hwnd(), VK_F8);
     ASSERT_TRUE(window.program().waitForOutput("shaders reloaded:", kFrameTimeout)) << window.program().output();
     const Rgba8Image edited = window.shot();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - saved).count();
+    const std::string log = window.program().output();
+    const size_t line = log.find("shaders reloaded:");
+    std::printf("hot reload: %.2f s from saving the edit to its frame captured; the program's line: %s\n", seconds,
+                log.substr(line, log.find('\n', line) - line).c_str());
     Rgba8Image expected = before;
     for (size_t i = 0; i + 3 < expected.pixels.size(); i += 4) std::swap(expected.pixels[i], expected.pixels[i + 2]);
     expectFrame(edited, expected, "after the edit (red and blue swapped)");

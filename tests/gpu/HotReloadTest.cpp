@@ -117,6 +117,55 @@ TEST_F(HotReload, ATechniqueIsReplacedAllTogetherOrNotAtAll) {
     EXPECT_EQ(draw(*library, kTint), (Rgba{255, 0, 0, 255}));
 }
 
+// The permutations drawn in the last frames are compiled first and swapped in before the reload
+// returns; the technique's others follow in the background. One asked for before the background
+// compile lands is compiled from the edited source then; one that fails in the background falls
+// back to the precompiled version and reports its message.
+TEST_F(HotReload, ThePermutationsInUseComeFirstAndTheRestFollowInTheBackground) {
+    auto library = reloadingLibrary();
+    if (!library) GTEST_SKIP() << "no shader compiler on this machine";
+    const auto drawOnlySolid = [&] {  // two frames that draw the solid colour and not the tint
+        for (int frame = 0; frame < 2; ++frame) {
+            library->beginFrame();
+            draw(*library, kSolid);
+        }
+    };
+    EXPECT_EQ(draw(*library, kTint), (Rgba{0, 0, 255, 255}));
+    drawOnlySolid();
+
+    setColor("float3(0.0, 1.0, 0.0)");
+    write("reload/tint.hlsl", "float4 ps_main() : SV_Target { return float4(1.0, 0.0, 0.0, 1.0); }\n");
+    ReloadResult result = library->reloadAll();
+    EXPECT_EQ(result.techniquesReloaded, 1);
+    EXPECT_EQ(result.shadersCompiled, 2) << "the vertex and solid-colour shaders, in use";
+    EXPECT_EQ(result.shadersInBackground, 1) << "the tint, not drawn in the last two frames";
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{0, 255, 0, 255}));
+    library->waitForBackgroundCompile();
+    EXPECT_FALSE(library->backgroundCompilePending());
+    EXPECT_EQ(draw(*library, kTint), (Rgba{255, 0, 0, 255}));
+    EXPECT_TRUE(library->errors().empty());
+
+    // Asked for before the background compile lands: compiled then, from the edited source.
+    drawOnlySolid();
+    write("reload/tint.hlsl", "float4 ps_main() : SV_Target { return float4(1.0, 1.0, 1.0, 1.0); }\n");
+    EXPECT_EQ(library->reloadAll().shadersInBackground, 1);
+    EXPECT_EQ(draw(*library, kTint), (Rgba{255, 255, 255, 255}));
+    library->waitForBackgroundCompile();
+    EXPECT_EQ(draw(*library, kTint), (Rgba{255, 255, 255, 255}));
+
+    // Broken where it is not in use: the reload succeeds for what is drawn, the background
+    // compile reports the tint's error, and the tint falls back to the precompiled shader.
+    drawOnlySolid();
+    write("reload/tint.hlsl", "float4 ps_main() : SV_Target { return undeclared_value; }\n");
+    result = library->reloadAll();
+    EXPECT_TRUE(result.failedTechniques.empty());
+    library->waitForBackgroundCompile();
+    ASSERT_EQ(library->errors().count("reload"), 1u);
+    EXPECT_NE(library->errors().at("reload").find("reload/tint.hlsl"), std::string::npos) << library->errors().at("reload");
+    EXPECT_EQ(draw(*library, kTint), (Rgba{0, 0, 255, 255}));
+    EXPECT_EQ(draw(*library, kSolid), (Rgba{0, 255, 0, 255}));
+}
+
 // D3DCompile, the default backend on Windows. Wine's own d3dcompiler_47 compiles a shader
 // this simple; on Windows it is Microsoft's.
 TEST_F(HotReload, D3DCompileBackendCompilesFromTheSourceFolder) {

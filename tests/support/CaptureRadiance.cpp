@@ -1,8 +1,7 @@
 #include "support/CaptureRadiance.h"
 
 #include "core/ExrImage.h"
-#include "support/Process.h"
-#include "support/TestPaths.h"
+#include "support/HeadlessCapture.h"
 
 #include <Imath/half.h>
 #include <gtest/gtest.h>
@@ -11,11 +10,12 @@ namespace firmament::test {
 
 std::vector<float> captureRadiance(const std::filesystem::path& folder, const std::string& name, const std::vector<std::wstring>& settings, int width,
                                    int height) {
-    std::filesystem::create_directories(folder);
-    std::vector<std::wstring> args{L"--headless", L"--frames", L"1", L"--resolution", std::to_wstring(width) + L"x" + std::to_wstring(height)};
-    for (const std::wstring& s : settings) args.insert(args.end(), {L"--set", s});
-    args.insert(args.end(), {L"--capture", (folder / (name + ".png")).wstring()});
-    const ProcessResult run = runProcess(firmamentExe(), args);
+    HeadlessCapture capture;
+    capture.settings = settings;
+    capture.width = width;
+    capture.height = height;
+    capture.png = folder / (name + ".png");
+    const ProcessResult run = captureHeadless(capture);
     EXPECT_EQ(run.exitCode, 0u) << run.output;
     if (run.exitCode != 0) return {};
     const ExrFile file = readExr(folder / (name + ".exr"));

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace firmament::test {
 
@@ -31,13 +32,19 @@ std::wstring quote(const std::wstring& argument) {
 struct Started {
     PROCESS_INFORMATION process{};
     HANDLE output = nullptr;  // the read end of the program's stdout and stderr
+    HANDLE input = nullptr;   // the write end of the program's stdin (with InputPipe)
 };
 
-Started start(const std::wstring& program, const std::vector<std::wstring>& arguments) {
+Started start(const std::wstring& program, const std::vector<std::wstring>& arguments, bool pipeInput = false) {
     SECURITY_ATTRIBUTES inherit{sizeof inherit, nullptr, TRUE};
     HANDLE readEnd = nullptr, writeEnd = nullptr;
     if (!CreatePipe(&readEnd, &writeEnd, &inherit, 0)) throw std::runtime_error("CreatePipe failed");
     SetHandleInformation(readEnd, HANDLE_FLAG_INHERIT, 0);
+    HANDLE inputRead = nullptr, inputWrite = nullptr;
+    if (pipeInput) {
+        if (!CreatePipe(&inputRead, &inputWrite, &inherit, 0)) throw std::runtime_error("CreatePipe failed");
+        SetHandleInformation(inputWrite, HANDLE_FLAG_INHERIT, 0);  // only the program's end is inherited
+    }
 
     std::wstring commandLine = quote(program);
     for (const auto& argument : arguments) commandLine += L" " + quote(argument);
@@ -47,16 +54,19 @@ Started start(const std::wstring& program, const std::vector<std::wstring>& argu
     startup.dwFlags = STARTF_USESTDHANDLES;
     startup.hStdOutput = writeEnd;
     startup.hStdError = writeEnd;
-    startup.hStdInput = GetStdHandle(STD_INPUT_HANDLE);
+    startup.hStdInput = pipeInput ? inputRead : GetStdHandle(STD_INPUT_HANDLE);
     Started started;
     const BOOL ok = CreateProcessW(program.c_str(), commandLine.data(), nullptr, nullptr, TRUE, 0, nullptr, nullptr, &startup,
                                    &started.process);
     CloseHandle(writeEnd);
+    if (inputRead) CloseHandle(inputRead);
     if (!ok) {
         CloseHandle(readEnd);
+        if (inputWrite) CloseHandle(inputWrite);
         throw std::runtime_error("CreateProcessW failed for the program under test");
     }
     started.output = readEnd;
+    started.input = inputWrite;
     return started;
 }
 }  // namespace
@@ -84,6 +94,7 @@ struct RunningProcess::Impl {
     bool ended = false;  // the pipe was closed: the program (and everything that held it) ended
 
     ~Impl() {
+        if (started.input) CloseHandle(started.input);
         CloseHandle(started.process.hProcess);
         CloseHandle(started.process.hThread);
         CloseHandle(started.output);
@@ -103,9 +114,9 @@ struct RunningProcess::Impl {
     }
 };
 
-RunningProcess::RunningProcess(const std::wstring& program, const std::vector<std::wstring>& arguments)
+RunningProcess::RunningProcess(const std::wstring& program, const std::vector<std::wstring>& arguments, InputPipe input)
     : impl_(std::make_shared<Impl>()) {
-    impl_->started = start(program, arguments);
+    impl_->started = start(program, arguments, input == InputPipe::Yes);
     impl_->reader = std::thread([impl = impl_] { impl->read(); });
 }
 
@@ -126,6 +137,36 @@ RunningProcess::~RunningProcess() {
 }
 
 unsigned long RunningProcess::id() const { return impl_->started.process.dwProcessId; }
+
+bool RunningProcess::writeInput(const std::string& text) {
+    if (!impl_->started.input) return false;
+    DWORD written = 0;
+    return WriteFile(impl_->started.input, text.data(), static_cast<DWORD>(text.size()), &written, nullptr) && written == text.size();
+}
+
+void RunningProcess::closeInput() {
+    if (impl_->started.input) CloseHandle(std::exchange(impl_->started.input, nullptr));
+}
+
+size_t RunningProcess::outputSize() const {
+    std::lock_guard lock(impl_->mutex);
+    return impl_->output.size();
+}
+
+std::optional<size_t> RunningProcess::waitForFirst(const std::vector<std::string>& texts, size_t from, std::chrono::milliseconds timeout) const {
+    std::optional<size_t> which;
+    const auto found = [&] {
+        for (size_t i = 0; i < texts.size(); ++i)
+            if (impl_->output.size() > from && impl_->output.find(texts[i], from) != std::string::npos) {
+                which = i;
+                return true;
+            }
+        return false;
+    };
+    std::unique_lock lock(impl_->mutex);
+    impl_->grew.wait_for(lock, timeout, [&] { return found() || impl_->ended; });
+    return which;
+}
 
 std::string RunningProcess::output() const {
     std::lock_guard lock(impl_->mutex);

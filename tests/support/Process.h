@@ -19,15 +19,26 @@ ProcessResult runProcess(const std::wstring& program, const std::vector<std::wst
 
 // A program started and left running; its output is read as it comes. The destructor ends the
 // program if it still runs.
+enum class InputPipe { No, Yes };  // No: the program reads this process's own standard input
+
 class RunningProcess {
 public:
-    RunningProcess(const std::wstring& program, const std::vector<std::wstring>& arguments);  // throws std::runtime_error
+    // throws std::runtime_error
+    RunningProcess(const std::wstring& program, const std::vector<std::wstring>& arguments, InputPipe input = InputPipe::No);
     ~RunningProcess();
     RunningProcess(const RunningProcess&) = delete;
     RunningProcess& operator=(const RunningProcess&) = delete;
 
     unsigned long id() const;
     std::string output() const;  // what it has written so far
+    size_t outputSize() const;
+    // With InputPipe::Yes: writes to the program's standard input (false when it cannot), or
+    // closes it (the program reads its end).
+    bool writeInput(const std::string& text);
+    void closeInput();
+    // The index of the first of `texts` found in the output after its first `from` characters,
+    // once one is; nullopt when the time ran out or the program ended first.
+    std::optional<size_t> waitForFirst(const std::vector<std::string>& texts, size_t from, std::chrono::milliseconds timeout) const;
     // True once `text` is in the output `times` times; false when the time ran out or the
     // program ended first.
     bool waitForOutput(const std::string& text, std::chrono::milliseconds timeout, int times = 1) const;

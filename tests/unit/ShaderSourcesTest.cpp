@@ -52,6 +52,14 @@ TEST(ShaderSources, CompilerCommandLines) {
     EXPECT_EQ(vkd3dShellCommand("/usr/bin/vkd3d-compiler", "/src/my shaders", key, "/tmp/w.hlsl", "/tmp/o's.cso"),
               "cd '/src/my shaders' && '/usr/bin/vkd3d-compiler' -x hlsl -b dxbc-tpf -p 'ps_5_0' -e 'ps_main' "
               "-o '/tmp/o'\\''s.cso' '/tmp/w.hlsl'");
+    // Through the build's cache of compiled shaders (cmake/shader-cache.sh), which takes the
+    // compiler and its arguments.
+    EXPECT_EQ(vkd3dShellCommand("/usr/bin/vkd3d-compiler", "/src", key, "/tmp/w.hlsl", "/tmp/o.cso", "/src/cmake/shader-cache.sh"),
+              "cd '/src' && sh '/src/cmake/shader-cache.sh' '/usr/bin/vkd3d-compiler' -x hlsl -b dxbc-tpf -p 'ps_5_0' -e 'ps_main' "
+              "-o '/tmp/o.cso' '/tmp/w.hlsl'");
+    // Every job once, as many at a time as the host has cores.
+    EXPECT_EQ(parallelJobsCommand({"/tmp/a.sh", "/tmp/b c.sh"}),
+              "printf '%s\\n' '/tmp/a.sh' '/tmp/b c.sh' | xargs -P \"$(nproc 2>/dev/null || echo 2)\" -n 1 sh");
     EXPECT_EQ(fxcCommandLine(L"C:\\Kits\\fxc.exe", L"C:\\my shaders", key, L"C:\\t\\o.cso"),
               L"C:\\Kits\\fxc.exe /nologo /O3 /T ps_5_0 /E ps_main /I \"C:\\my shaders\" /D SAMPLES=16 /D USE_LUT=1 "
               L"/Fo C:\\t\\o.cso \"C:\\my shaders\\sky/sky.hlsl\"");
