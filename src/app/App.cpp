@@ -24,7 +24,9 @@ namespace firmament {
 
 namespace {
 
-constexpr double kSourcePollSeconds = 0.25;  // shader files are checked four times a second
+// Shader files are checked four times a second of wall-clock time (not the frame clock, which
+// --time-step 0 holds still).
+constexpr auto kSourcePollInterval = std::chrono::milliseconds(250);
 
 std::filesystem::path executableFolder() {
     wchar_t path[MAX_PATH];
@@ -306,7 +308,7 @@ void App::captureView(const CaptureItem& view) {
     timer_ = StepTimer{};
     timer_.setFixedStep(options_.timeStep.value_or(1.0 / 60.0));  // a headless run's clock (App::App)
     frameTimes_ = FrameTimeHistory{};
-    lastSourcePoll_ = 0.0;
+    lastSourcePoll_ = {};
     notice_.clear();
     noticeIsError_ = false;
     gpu_->renderer.startOver();
@@ -382,8 +384,9 @@ void App::update() {
     const double now = timer_.totalSeconds();
     const float dt = static_cast<float>(timer_.deltaSeconds());
     frameTimes_.add(dt * 1000.0f);
-    if (state_.shaders.autoReload && gpu_->shaders.hotReloadEnabled() && now - lastSourcePoll_ >= kSourcePollSeconds) {
-        lastSourcePoll_ = now;
+    const auto wallClock = std::chrono::steady_clock::now();
+    if (state_.shaders.autoReload && gpu_->shaders.hotReloadEnabled() && wallClock - lastSourcePoll_ >= kSourcePollInterval) {
+        lastSourcePoll_ = wallClock;
         const ReloadResult result = gpu_->shaders.reloadChanged();
         if (result.attempted())
             setNotice(result.failedTechniques.empty() ? "shaders reloaded after a file change" : "shader reload failed: see the error window",

@@ -19,6 +19,7 @@
 #include "ui/FrameTimeHistory.h"
 #include "ui/Overlay.h"
 
+#include <chrono>
 #include <memory>
 
 namespace firmament {
@@ -109,7 +110,7 @@ private:
     FlightPath recording_;
     StepTimer timer_;
     FrameTimeHistory frameTimes_;
-    double lastSourcePoll_ = 0.0;
+    std::chrono::steady_clock::time_point lastSourcePoll_{};  // wall-clock time of the last look at the shader files
     std::string notice_;
     bool noticeIsError_ = false;
 };
