@@ -292,7 +292,7 @@ Settings
                          runs render its whole length unless --frames is given
   --record-flight FILE   write the camera and sun, ten keyframes a second, on exit
   --batch FILE           headless: capture each view of FILE (views.json's form:
-                         name, settings, set, resolution, frames) from a fresh
+                         name, settings, set, resolution, frames, captureUi) from a fresh
                          start into --capture's PATH-name.png and .exr
   --batch -              the same for views read one a line (JSON, with "capture")
                          from standard input, each answered "batch: done ID"
