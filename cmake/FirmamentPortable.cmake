@@ -40,6 +40,8 @@ add_library(firmament_portable STATIC
     ${src}/atmosphere/yusov/YusovParameterization.cpp
     ${src}/clouds/CloudField.cpp
     ${src}/clouds/CloudGrid.cpp
+    ${src}/clouds/CloudMedium.cpp
+    ${src}/clouds/CloudPathTracer.cpp
     ${src}/clouds/LightSpace.cpp
     ${src}/clouds/OpticalDepthTable.cpp
     ${src}/clouds/ParticleBlending.cpp
@@ -77,6 +79,7 @@ add_executable(firmament_portable_tests
     ${tests}/support/TestMain.cpp
     ${tests}/unit/BenchmarkPlanTest.cpp
     ${tests}/unit/CaptureBatchTest.cpp
+    ${tests}/unit/CloudPathTracerTest.cpp
     ${tests}/unit/BrunetonParameterizationTest.cpp
     ${tests}/unit/CameraTest.cpp
     ${tests}/unit/CascadeSplitsTest.cpp

@@ -1,6 +1,8 @@
 // The clouds from outside, in captured EXRs (radiance before tone mapping): Show particles draws
 // the field as geometry and as transparency, finite everywhere; the transparency view brightens
 // the dark terrain under it with white cloud; and every cloud control changes the picture.
+#include "clouds/VolumeBlendingPass.h"
+#include "gpu/Device.h"
 #include "support/CaptureRadiance.h"
 
 #include <gtest/gtest.h>
@@ -117,14 +119,14 @@ TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
 
 // Volume-aware blending (docs/clouds.md, "Blending") against plain alpha blending, from below
 // broken clouds: the same where no particle is, different where particles are (where they
-// intersect), similar on the whole; Auto runs the per-pixel lists here, bit for bit.
+// intersect), similar on the whole. (Auto picks the device's path: the comparison of the two
+// volume-aware paths is the next test's.)
 TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
     // The clouds' shadows off: the clear frame is the one without clouds.
     const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=10", L"clouds.cloudiness=0.35", L"clouds.shadows=off"};
     const std::vector<float> clear = capture("blend-clear", plus(below, {L"clouds.enabled=off"}));
     const std::vector<float> alpha = capture("blend-alpha", plus(below, {L"clouds.volumetricBlending=off"}));
     const std::vector<float> volume = capture("blend-volume", plus(below, {L"clouds.volumetricBlending=on"}));
-    const std::vector<float> lists = capture("blend-lists", plus(below, {L"clouds.volumetricBlending=on", L"clouds.blendingPath=Per-pixel lists"}));
     ASSERT_FALSE(clear.empty());
     ASSERT_EQ(volume.size(), alpha.size());
     EXPECT_TRUE(allFinite(volume));
@@ -141,7 +143,32 @@ TEST(CloudCapture, VolumeAwareBlendingChangesOnlyWhereParticlesAre) {
     EXPECT_LE(emptyChanged, empty / 200);  // (a particle too thin to change alpha blending by 1e-6 may show)
     EXPECT_GT(differs, 0.05);
     EXPECT_NEAR(mean(volume) / mean(alpha), 1.0, 0.25);
-    EXPECT_EQ(lists, volume);
+}
+
+// The two volume-aware paths in a frame: the rasterizer-ordered one merges each pixel's fragments
+// as they arrive, the lists sort them by their back first, so the two differ where three or more
+// particles overlap (docs/clouds.md, "Blending"), but only there. Where the device has no
+// rasterizer-ordered views, the program runs the lists for both requests, so the comparison
+// would hold a path to itself: it is reported skipped with the reason.
+TEST(CloudCapture, TheOrderedPathDrawsTheFrameTheListsDraw) {
+    const Device warp(DeviceOptions{DriverType::Warp, std::nullopt, false});
+    const BlendingSupport support = queryBlendingSupport(warp.device());
+    if (!support.rasterizerOrderedViews || !support.typedUavLoads)
+        GTEST_SKIP() << "not run: " << warp.adapterName() << " reports no rasterizer-ordered views (ROVsSupported "
+                     << support.rasterizerOrderedViews << ", typed UAV loads " << support.typedUavLoads
+                     << "): Blending path Rasterizer-ordered views runs the per-pixel lists here";
+    const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=10", L"clouds.cloudiness=0.35"};
+    const std::vector<float> lists = capture("path-lists", plus(below, {L"clouds.blendingPath=Per-pixel lists"}));
+    const std::vector<float> ordered = capture("path-ordered", plus(below, {L"clouds.blendingPath=Rasterizer-ordered views"}));
+    ASSERT_FALSE(lists.empty());
+    ASSERT_EQ(ordered.size(), lists.size());
+    EXPECT_TRUE(allFinite(ordered));
+    // Bounds from the one device that has run it so far (DXVK on lavapipe, 1280 x 720: 52.6 dB
+    // tone-mapped, 1% of the pixels more than 2 steps of 255 apart).
+    const double differs = changedShare(lists, ordered);
+    std::printf("values where the ordered path differs from the lists by more than 1%%: %.2f%%\n", 100.0 * differs);
+    EXPECT_LT(differs, 0.05);
+    EXPECT_NEAR(mean(ordered) / mean(lists), 1.0, 0.02);
 }
 
 // Downscale (docs/clouds.md, "Low-resolution rendering"): at 2x and 4x the clouds keep their

@@ -54,9 +54,11 @@ protected:
         return asVector<glm::vec4>(readTexture2D(device(), context(), target.texture.Get()).bytes);
     }
 
-    // `draws` full-screen triangles of the test shader `file` over a width x height target,
-    // `path` begun for it, probe (0, capacity, draw, height) at b0; then the resolve. The pixels.
-    std::vector<glm::vec4> drawAndResolve(ParticleBlending path, const char* file, int width, int height, unsigned draws) {
+    // `draws` draws of `trianglesPerDraw` full-screen triangles of the test shader `file` over a
+    // width x height target, `path` begun for it, probe (0, capacity, draw, height) at b0 and
+    // `input` at t0; then the resolve. The pixels.
+    std::vector<glm::vec4> drawAndResolve(ParticleBlending path, const char* file, int width, int height, unsigned draws, unsigned trianglesPerDraw = 1,
+                                          ID3D11ShaderResourceView* input = nullptr) {
         const Texture2D target = createColorTexture(device(), width, height, DXGI_FORMAT_R32G32B32A32_FLOAT, D3D11_BIND_RENDER_TARGET);
         drawnPass = std::make_unique<VolumeBlendingPass>(device());
         drawnPass->begin(device(), context(), path, width, height);
@@ -69,12 +71,15 @@ protected:
         context()->VSSetShader(testShaderLibrary->vertexShader({file, "vs_main", "vs_5_0", {}}), nullptr, 0);
         context()->PSSetShader(testShaderLibrary->pixelShader({file, "ps_main", "ps_5_0", {}}), nullptr, 0);
         drawnPass->bindForParticles(context(), target.rtv.Get());
+        context()->PSSetShaderResources(0, 1, &input);
         for (unsigned draw = 0; draw < draws; ++draw) {
             probe.update(context(), glm::uvec4(0u, drawnPass->nodeCapacity(), draw, static_cast<unsigned>(height)));
             ID3D11Buffer* constants[] = {probe.get()};
             context()->PSSetConstantBuffers(0, 1, constants);
-            context()->Draw(3, 0);
+            context()->Draw(3 * trianglesPerDraw, 0);
         }
+        ID3D11ShaderResourceView* none = nullptr;
+        context()->PSSetShaderResources(0, 1, &none);
         drawnPass->resolve(context(), *productShaderLibrary, target.rtv.Get());
         return asVector<glm::vec4>(readTexture2D(device(), context(), target.texture.Get()).bytes);
     }
@@ -191,6 +196,51 @@ TEST_F(FragmentListsTest, TheOrderedPathMergesAndResolvesAsTheTwin) {
             const BlendedLight expected = twin.resolve();
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(pixels[y * kWidth + x][c], expected.light[c], 1e-3f * expected.light[c]) << x << ", " << y << " channel " << c;
+        }
+}
+
+// The ordered path as the particles use it: 24 overlapping fragments per pixel from one draw, in
+// no back-to-front order, so that each pixel's result depends on the order they merge in, against
+// the twin's VolumeBlend fed in primitive order. Only the views' ordering keeps that order within a
+// draw, so the test runs only where the device has rasterizer-ordered views; elsewhere it is
+// reported skipped, with the reason (it would test nothing, or test an order the API does not
+// promise).
+TEST_F(FragmentListsTest, ManyFragmentsPerPixelInOneDrawMergeInPrimitiveOrder) {
+    const BlendingSupport support = queryBlendingSupport(device());
+    if (!support.rasterizerOrderedViews || !support.typedUavLoads)
+        GTEST_SKIP() << "not run: this device reports no rasterizer-ordered views (D3D11_FEATURE_D3D11_OPTIONS2: ROVsSupported "
+                     << support.rasterizerOrderedViews << ", typed UAV loads " << support.typedUavLoads
+                     << "), so nothing keeps primitive order within a draw";
+    constexpr int kWidth = 8, kHeight = 4, kFragments = 24;
+    std::mt19937 random(23);
+    std::vector<ParticleFragment> stack = randomStack(random, kFragments);
+    std::vector<SyntheticFragment> input;
+    for (const ParticleFragment& f : stack) input.push_back({glm::vec4(f.colour, f.extinction), glm::vec2(f.front, f.back), glm::uvec2(0)});
+    auto buffer = structuredBuffer(input, false);
+    ComPtr<ID3D11ShaderResourceView> view;
+    ASSERT_HRESULT_SUCCEEDED(device()->CreateShaderResourceView(buffer.Get(), nullptr, &view));
+    const std::vector<glm::vec4> pixels =
+        drawAndResolve(ParticleBlending::RasterizerOrdered, "clouds/ordered_fragments_one_draw.hlsl", kWidth, kHeight, 1, kFragments, view.Get());
+
+    // The order matters for this stack: merged back to front, the light differs.
+    VolumeBlend inOrder, backToFront;
+    inOrder.behind.light = backToFront.behind.light = kBackground;
+    for (const ParticleFragment& f : stack) inOrder.add(f);
+    std::sort(stack.begin(), stack.end(), [](const ParticleFragment& a, const ParticleFragment& b) { return a.back > b.back; });
+    for (const ParticleFragment& f : stack) backToFront.add(f);
+    ASSERT_GT(glm::length(inOrder.resolve().light - backToFront.resolve().light), 0.01f) << "a stack whose order does not matter tests nothing";
+
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            VolumeBlend twin;
+            twin.behind.light = kBackground;
+            for (const SyntheticFragment& f : input) {
+                const glm::vec3 colour = glm::vec3(f.colourExtinction) * glm::vec3(1.0f + 0.25f * x, 1.0f + 0.25f * y, 1.0f);
+                twin.add({colour, f.colourExtinction.a, f.extent.x, f.extent.y});
+            }
+            const BlendedLight expected = twin.resolve();
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(pixels[y * kWidth + x][c], expected.light[c], 1e-3f * expected.light[c] + 1e-5f) << x << ", " << y << " channel " << c;
         }
 }
 
