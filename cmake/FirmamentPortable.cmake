@@ -110,9 +110,11 @@ firmament_warnings(firmament_portable_tests)
 add_custom_command(TARGET firmament_portable_tests POST_BUILD
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/clouds $<TARGET_FILE_DIR:firmament_portable_tests>/media/clouds
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/soak $<TARGET_FILE_DIR:firmament_portable_tests>/media/soak)
-# Two processes (GoogleTest's shards) rather than one per case, as the Windows build's unit tests.
+# Two processes (GoogleTest's shards) rather than one per case, as the Windows build's unit tests,
+# with the same two slow cases in the full tier (tests/CMakeLists.txt).
 include(${CMAKE_CURRENT_LIST_DIR}/FirmamentTestGroups.cmake)
-firmament_test_groups(firmament_portable_tests SHARDS 2 TIMEOUT 600)
+firmament_test_groups(firmament_portable_tests SHARDS 2 TIMEOUT 600
+    FULL_TIER CloudScatteringFile ParticleScattering.TheOrdersMatchAMonteCarloRandomWalkThroughTheSameSphere)
 
 if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     include(${tests}/fuzz/FuzzTargets.cmake)

@@ -24,7 +24,8 @@ CloudParticles::CloudParticles(ID3D11Device* device)
       sortBuffer_(device),
       noCulling_(states::cullNone(device)),
       depth_(states::depthReversed(device)),
-      arguments_(createIndirectArguments(device, "cloud particle arguments")) {}
+      arguments_(createIndirectArguments(device, "cloud particle arguments")),
+      visibleArguments_(createIndirectArguments(device, "cloud visible particle arguments")) {}
 
 void CloudParticles::resizeGrid(ID3D11Device* device, const CloudSettings& settings) {
     const int dimension = settings.effectiveRingDimension();
@@ -37,6 +38,7 @@ void CloudParticles::resizeGrid(ID3D11Device* device, const CloudSettings& setti
     capacity_ = cloudParticleCapacity(settings);
     particles_ = createStructuredBuffer(device, capacity_, sizeof(gpu::CloudParticle), nullptr, "cloud particles");
     for (StructuredBuffer& keys : keys_) keys = createStructuredBuffer(device, capacity_, 2 * sizeof(std::uint32_t), nullptr, "cloud sort keys");
+    visibleKeys_ = createStructuredBuffer(device, capacity_, 2 * sizeof(std::uint32_t), nullptr, "cloud visible keys");
     rings_ = settings.rings;
     dimension_ = dimension;
     layers_ = settings.maxLayers;
@@ -90,6 +92,20 @@ void CloudParticles::update(FrameContext& frame, const CloudSettings& settings, 
         unbindCompute(context, 0, 1);
     }
     sort(frame);
+    culled_ = settings.visibilityCulling;
+    if (culled_) cullToView(frame);
+}
+
+// One group over the sorted keys (clouds/cull_particles.hlsl): the visible ones, in order.
+void CloudParticles::cullToView(FrameContext& frame) {
+    ID3D11DeviceContext* context = frame.context;
+    auto pass = frame.profiler.scope("Clouds: visibility");
+    ID3D11Buffer* buffers[] = {frame.frameConstants, fieldBuffer_.get()};
+    context->CSSetConstantBuffers(0, 2, buffers);
+    bindCompute(context, frame.shaders.computeShader(computeKey("cull_particles")), {arguments_.srv.Get(), keys_[sortedIndex_].srv.Get(), particles_.srv.Get()},
+                {visibleKeys_.uav.Get(), visibleArguments_.uav.Get()});
+    context->Dispatch(1, 1, 1);
+    unbindCompute(context, 3, 2);
 }
 
 // Blocks of 256 sorted in place in keys_[0]; then runs of 256, 512, ... merged in pairs from one
@@ -120,11 +136,12 @@ void CloudParticles::drawBoundingShapes(FrameContext& frame) {
     context->OMSetDepthStencilState(depth_.Get(), 0);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
     context->RSSetState(noCulling_.Get());
-    drawInstanced(frame, kShapeVertexShader, kShapePixelShader);
+    drawInstanced(frame, kShapeVertexShader, kShapePixelShader, ParticleSet::InView);
     context->OMSetDepthStencilState(nullptr, 0);
 }
 
-void CloudParticles::drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader, int width, int height) {
+void CloudParticles::drawInstanced(FrameContext& frame, const ShaderKey& vertexShader, const ShaderKey& pixelShader, ParticleSet set, int width, int height) {
+    const bool inView = set == ParticleSet::InView && culled_;
     ID3D11DeviceContext* context = frame.context;
     const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width > 0 ? width : frame.width()), static_cast<float>(height > 0 ? height : frame.height()),
                                   0.0f, 1.0f};
@@ -134,12 +151,12 @@ void CloudParticles::drawInstanced(FrameContext& frame, const ShaderKey& vertexS
     ID3D11Buffer* buffers[] = {frame.frameConstants, fieldBuffer_.get()};
     context->VSSetConstantBuffers(0, 2, buffers);
     context->PSSetConstantBuffers(0, 2, buffers);
-    ID3D11ShaderResourceView* inputs[] = {keys_[sortedIndex_].srv.Get(), particles_.srv.Get()};
+    ID3D11ShaderResourceView* inputs[] = {inView ? visibleKeys_.srv.Get() : keys_[sortedIndex_].srv.Get(), particles_.srv.Get()};
     context->VSSetShaderResources(0, 2, inputs);
     context->PSSetShaderResources(0, 2, inputs);
     context->VSSetShader(frame.shaders.vertexShader(vertexShader), nullptr, 0);
     context->PSSetShader(frame.shaders.pixelShader(pixelShader), nullptr, 0);
-    context->DrawInstancedIndirect(arguments_.buffer.Get(), 4 * sizeof(unsigned));
+    context->DrawInstancedIndirect(inView ? visibleArguments_.buffer.Get() : arguments_.buffer.Get(), 4 * sizeof(unsigned));
     ID3D11ShaderResourceView* none[2] = {};
     context->VSSetShaderResources(0, 2, none);
     context->PSSetShaderResources(0, 2, none);

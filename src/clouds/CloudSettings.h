@@ -53,6 +53,10 @@ struct CloudSettings {
     // "Opacity early exit": a particle's walk toward the sun stops once its transmittance is
     // below 0.01 (Yusov 2014); off, it goes on to the particle itself.
     bool opacityEarlyExit = true;
+    // "Visibility culling": only the particles whose bounding sphere reaches into the view are
+    // drawn (Yusov 2014's visibility pass); off, every particle is drawn, for comparison. The
+    // passes seen from the sun take every particle either way.
+    bool visibilityCulling = true;
     // "Cloud shadows": the clouds' light-space transparency map drawn each frame, shadowing the
     // terrain and, by Shafts from clouds, the light shafts; off, the clouds cast no shadow.
     bool shadows = true;
@@ -93,6 +97,7 @@ struct CloudSettings {
         v.choiceIndex("lightSpaceResolution", lightSpaceIndex, kLightSpaceResolutionNames, "Light-space map resolution");
         lightSpaceResolution = 256 << lightSpaceIndex;
         v.field("opacityEarlyExit", opacityEarlyExit, "Opacity early exit");
+        v.field("visibilityCulling", visibilityCulling, "Visibility culling");
         v.choice("particleDensity", particleDensity, kParticleDensityMethodNames, "Particle density");
         int resolutionIndex = 0;
         while (resolutionIndex < 3 && (128 << resolutionIndex) < densityResolution) ++resolutionIndex;

@@ -100,7 +100,7 @@ void CloudShadowMap::render(FrameContext& frame, CloudParticles& particles, cons
         context->PSSetConstantBuffers(2, 1, &buffer);
         context->PSSetShaderResources(2, 1, tables.opticalDepth.srv.GetAddressOf());
         context->PSSetSamplers(0, 1, linearWrap_.GetAddressOf());
-        particles.drawInstanced(frame, kMapVertexShader, kMapPixelShader, kResolution, kResolution);
+        particles.drawInstanced(frame, kMapVertexShader, kMapPixelShader, ParticleSet::All, kResolution, kResolution);
     }
     ID3D11ShaderResourceView* none = nullptr;
     context->PSSetShaderResources(2, 1, &none);

@@ -79,8 +79,12 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
     };
     const double cells = read(particles_.validCells().arguments()), generated = read(particles_.particleArguments());
     const double capacity = static_cast<double>(particles_.capacity());
-    std::vector<std::pair<std::string, double>> result{
-        {"cloud valid cells", cells}, {"cloud particles", std::min(generated, capacity)}, {"cloud particles over capacity", std::max(generated - capacity, 0.0)}};
+    const double kept = std::min(generated, capacity);
+    const double drawn = particles_.visibleArguments() ? read(particles_.visibleArguments()) : kept;
+    std::vector<std::pair<std::string, double>> result{{"cloud valid cells", cells},
+                                                       {"cloud particles", kept},
+                                                       {"cloud particles over capacity", std::max(generated - capacity, 0.0)},
+                                                       {"cloud particles drawn", drawn}};
     if (blending_.path() == ParticleBlending::PerPixelLists) {
         const VolumeBlendingPass::Overflow o = blending_.readOverflow(device, context);
         result.emplace_back("cloud fragments", static_cast<double>(o.nodesAskedFor));
@@ -228,7 +232,7 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         context->PSSetShaderResources(10, 1, &sunTransmittance);
         ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
         context->PSSetSamplers(0, 2, samplers);
-        particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), width, height);
+        particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), ParticleSet::InView, width, height);
         ID3D11ShaderResourceView* none[9] = {};
         context->PSSetShaderResources(2, 9, none);
     } while (blending_.firstBuildOverflowed(frame.device, context));
@@ -258,7 +262,7 @@ void Clouds::drawOpticalDepth(FrameContext& frame, const ParticleTables& tables)
     ID3D11ShaderResourceView* extra[] = {tables.opticalDepth.srv.Get(), frame.targets.depth().srv.Get()};
     context->PSSetShaderResources(2, 2, extra);
     context->PSSetSamplers(0, 1, linearWrap_.GetAddressOf());
-    particles_.drawInstanced(frame, kOpticalDepthVertexShader, kOpticalDepthPixelShader);
+    particles_.drawInstanced(frame, kOpticalDepthVertexShader, kOpticalDepthPixelShader, ParticleSet::InView);
     ID3D11ShaderResourceView* none[2] = {};
     context->PSSetShaderResources(2, 2, none);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);

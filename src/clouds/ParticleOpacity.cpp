@@ -59,7 +59,7 @@ void ParticleOpacity::buildTiles(FrameContext& frame, CloudParticles& particles,
     ID3D11Buffer* lightSpace = constantsBuffer_.get();
     context->VSSetConstantBuffers(2, 1, &lightSpace);
     context->PSSetConstantBuffers(2, 1, &lightSpace);
-    particles.drawInstanced(frame, kTileVertexShader, kTilePixelShader, resolution_, resolution_);
+    particles.drawInstanced(frame, kTileVertexShader, kTilePixelShader, ParticleSet::All, resolution_, resolution_);
     context->OMSetRenderTargets(0, nullptr, nullptr);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
     // Each tile's list ordered from the sun.

@@ -171,6 +171,24 @@ TEST(CloudCapture, TheOrderedPathDrawsTheFrameTheListsDraw) {
     EXPECT_NEAR(mean(ordered) / mean(lists), 1.0, 0.02);
 }
 
+// The visibility pass (docs/clouds.md, "Visibility") culls only particles that draw nothing: from
+// below, from above, inside the layer and looking back along the wind, the frame with culling is
+// the frame without it, value for value.
+TEST(CloudCapture, TheVisibilityPassChangesNoPixel) {
+    const std::vector<std::pair<std::string, std::vector<std::wstring>>> views{
+        {"below", {L"camera.position=0,1500,0", L"camera.yaw=30", L"camera.pitch=12", L"clouds.cloudiness=0.35"}},
+        {"above", {}},
+        {"inside", {L"camera.position=0,3000,0", L"camera.yaw=30", L"camera.pitch=5"}},
+        {"behind", {L"camera.position=0,2000,0", L"camera.yaw=-160", L"camera.pitch=-5"}}};
+    for (const auto& [name, view] : views) {
+        const std::vector<float> culled = capture("cull-" + name, plus(view, {L"clouds.visibilityCulling=on"}));
+        const std::vector<float> all = capture("all-" + name, plus(view, {L"clouds.visibilityCulling=off"}));
+        ASSERT_FALSE(culled.empty()) << name;
+        EXPECT_TRUE(allFinite(culled)) << name;
+        EXPECT_EQ(culled, all) << name;
+    }
+}
+
 // Downscale (docs/clouds.md, "Low-resolution rendering"): at 2x and 4x the clouds keep their
 // light on the whole, and the terrain the clouds do not cover keeps its own, but for the pixels
 // along its silhouette.

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -234,6 +235,79 @@ TEST_F(CloudParticlesTest, TheSortPutsEveryParticleBackToFront) {
     generate(settings, glm::vec3(0.0f, 3000.0f, 0.0f), 0.0);
     EXPECT_LT(particleCount(), 256u);
     expectBackToFront("one partial block");
+}
+
+// The visibility pass (clouds/cull_particles.hlsl): below, inside and above the layer, and looking
+// back along -z, the visible keys are the sorted keys whose bounding sphere is not wholly behind
+// one of the view-projection's six planes (the CPU's test, in double precision), in the same
+// order; every particle whose centre projects into the screen is among them; and many are culled.
+TEST_F(CloudParticlesTest, TheVisibilityPassKeepsThoseInTheViewInOrder) {
+    CloudSettings settings;
+    settings.rings = 4;
+    settings.ringDimension = 64;
+    settings.particleDistance = 6.0e4f;
+    const struct {
+        glm::vec3 position;
+        float yaw;
+        const char* name;
+    } views[] = {{{0.0f, 500.0f, 0.0f}, 0.0f, "below the layer"},
+                 {{3.0e4f, 3000.0f, -1.0e4f}, 0.0f, "inside the layer"},
+                 {{-7.0e4f, 9000.0f, 2.0e4f}, 0.0f, "above the layer"},
+                 {{0.0f, 1500.0f, 0.0f}, 180.0f, "below, looking back"}};
+    for (const auto& view : views) {
+        camera.yawDegrees = view.yaw;
+        generate(settings, view.position, 0.0);
+        const unsigned count = particleCount();
+        ASSERT_GT(count, 1000u) << view.name;
+        const std::vector<glm::uvec2> keys = sortedKeys(count);
+        const std::vector<gpu::CloudParticle> all = particles(clouds->capacity());
+        ASSERT_NE(clouds->visibleArguments(), nullptr);
+        const std::vector<unsigned> drawArguments = fromBytes<unsigned>(readBuffer(device(), context(), clouds->visibleArguments()), 8);
+        const unsigned visible = drawArguments[3];
+        EXPECT_EQ(drawArguments[4], 4u);
+        EXPECT_EQ(drawArguments[5], visible);
+        const std::vector<glm::uvec2> kept = fromBytes<glm::uvec2>(readBuffer(device(), context(), clouds->visibleKeys()), visible);
+
+        const glm::dmat4 m(constants.viewProjection);
+        const auto row = [&](int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
+        const glm::dvec4 planes[6] = {row(3) + row(0), row(3) - row(0), row(3) + row(1), row(3) - row(1), row(2), row(3) - row(2)};
+        std::map<std::uint64_t, bool> keptKeys;
+        for (const glm::uvec2& key : kept) keptKeys[(std::uint64_t(key.x) << 32) | key.y] = true;
+        size_t borderline = 0, onScreen = 0, disagree = 0;
+        for (const glm::uvec2& key : keys) {
+            const gpu::CloudParticle& p = all[key.y];
+            const double radius = std::max(p.centre.w, p.shape.x) * 1.01 + 1.0;
+            const glm::dvec4 centre(glm::dvec3(glm::vec3(p.centre)), 1.0);
+            bool inside = true, closeToPlane = false;
+            for (const glm::dvec4& plane : planes) {
+                const double scale = glm::length(glm::dvec3(plane));
+                if (scale <= 0.0) continue;
+                const double distance = glm::dot(plane, centre) / scale + radius;
+                inside = inside && distance >= 0.0;
+                closeToPlane = closeToPlane || std::abs(distance) < 1e-4 * radius + 0.5;
+            }
+            const bool isKept = keptKeys.count((std::uint64_t(key.x) << 32) | key.y) > 0;
+            // Exactly the CPU's choice, but for particles within rounding of a plane.
+            if (closeToPlane) ++borderline;
+            else disagree += isKept != inside;
+            const glm::dvec4 clip = m * centre;
+            const bool centreOnScreen = clip.w > 0.0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w && clip.z >= 0.0 && clip.z <= clip.w;
+            onScreen += centreOnScreen;
+            EXPECT_TRUE(!centreOnScreen || isKept) << view.name << ": a particle whose centre is on the screen was culled";
+        }
+        std::printf("%s: %u particles, %u drawn (%zu centres on the screen), %zu within rounding of a plane\n", view.name, count, visible, onScreen,
+                    borderline);
+        EXPECT_EQ(disagree, 0u) << view.name;
+        EXPECT_EQ(keptKeys.size(), kept.size()) << view.name << ": a key kept twice";
+        // In the back-to-front order of the sorted keys.
+        std::map<std::uint64_t, size_t> position;
+        for (size_t k = 0; k < keys.size(); ++k) position[(std::uint64_t(keys[k].x) << 32) | keys[k].y] = k;
+        for (size_t k = 1; k < kept.size(); ++k)
+            ASSERT_LT(position.at((std::uint64_t(kept[k - 1].x) << 32) | kept[k - 1].y), position.at((std::uint64_t(kept[k].x) << 32) | kept[k].y))
+                << view.name << ": out of order at " << k;
+        EXPECT_LT(visible, count * 3 / 4) << view.name << ": the view holds most of the field?";
+    }
+    camera.yawDegrees = 0.0f;
 }
 
 TEST_F(CloudParticlesTest, ParticlesAreFiniteOverPlacesAndEveryControlsExtremes) {

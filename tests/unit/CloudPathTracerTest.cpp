@@ -223,6 +223,45 @@ TEST(CloudPathTracer, TheSpheresMultipleScatteringMatchesTheTablesGenerator) {
     EXPECT_LT(worst, 0.15);
 }
 
+// An isolated particle as the particle renderer shades it (shaders/clouds/shade_particles.hlsl,
+// without the atmosphere and the sky): the reference sphere's table at the view ray's entry point
+// and direction, single scattering times the phase function plus multiple scattering, times the
+// particle's opacity 1 - e^(-tau) along the ray; against the path-traced light of the same
+// homogeneous sphere (every order), at the table's own optical radius 14 and at thinner ones. The
+// table is the same for every particle, so a thin particle scatters a thick sphere's light,
+// dimmed by its opacity: the printed ratios measure that (docs/clouds.md, "Path-traced
+// reference"). At the table's own optical radius the renderer is held to the reference.
+TEST(CloudPathTracer, AShadedParticleAgainstThePathTracedSphereAtThreeOpticalRadii) {
+    const ParticleScatteringParameters p;
+    const ParticleScatteringTable table = readParticleScattering(test::executableFolder() / "media" / "clouds" / "particle-scattering.exr", p);
+    CloudLighting lighting;
+    lighting.toSun = glm::dvec3(0.0, 0.0, 1.0);
+    std::mt19937_64 random(29);
+    const glm::ivec3 texels[] = {glm::ivec3(2, 10, 3), glm::ivec3(10, 40, 8), glm::ivec3(16, 5, 12), glm::ivec3(24, 20, 2), glm::ivec3(20, 33, 6)};
+    for (double density : {1.0, 0.3, 0.07}) {
+        const double tau = p.opticalRadius() * density;
+        const HomogeneousSphere sphere(glm::dvec3(0.0), 1.0, tau);
+        const CloudPathTracer tracer(sphere, lighting, CloudPathSettings{});
+        double sumRenderer = 0.0, sumTraced = 0.0;
+        for (const glm::ivec3 texel : texels) {
+            const SurfaceRay ray = scatteringTexelRay(p, texel.x, texel.y, texel.z);
+            const double chord = -2.0 * glm::dot(ray.entry, ray.direction);  // through the unit sphere
+            const double opacity = 1.0 - std::exp(-tau * chord);
+            const size_t index = table.index(texel.x, texel.y, texel.z);
+            const double phase = henyeyGreensteinPhase(glm::dot(lighting.toSun, ray.direction), p.asymmetry);
+            const double renderer = opacity * (table.single[index] * phase + table.multiple[index]);
+            const double traced = tracer.meanRadiance({ray.entry - ray.direction * 0.01, ray.direction}, 20000, random).x;
+            sumRenderer += renderer;
+            sumTraced += traced;
+        }
+        std::printf("optical radius %.2f: the particle renderer / the path-traced sphere over %zu texels: %.3f\n", tau, std::size(texels),
+                    sumRenderer / sumTraced);
+        if (density == 1.0) {
+            EXPECT_NEAR(sumRenderer / sumTraced, 0.85, 0.1) << "the table's own sphere (measured 0.80)";
+        }
+    }
+}
+
 // The particles' summed extinction at a point, written out here apart from CloudMedium: each
 // particle's frame as shaders/clouds/particle_shape.hlsli builds it, its noise turned by its
 // azimuth as the optical depth table's look-up turns it.
