@@ -31,8 +31,6 @@ Renderer::Renderer(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLib
       frameConstants_(device),
       orientationGrid_(std::make_unique<OrientationGridPass>(device)),
       atmosphere_(std::make_unique<Atmosphere>(device, tables)),
-      terrain_(std::make_unique<Terrain>(device, loadOrGenerateHeightField(TerrainGeneratorParameters{}, tables.cacheFolder),
-                                         AtmosphereParameters{}.earthRadius)),
       shadows_(std::make_unique<CascadedShadowMaps>(device)),
       lightShafts_(std::make_unique<LightShafts>(device)),
       clouds_(std::make_unique<Clouds>(device, tables)),
@@ -125,17 +123,18 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
 // light shafts with "Shafts from clouds: shadow map", after the terrain is drawn). Casters may stand as far
 // towards the sun as the highest peak can be seen above the sun's elevation, within 200 km.
 void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) {
-    terrain_->place(glm::dvec3(state.camera.position));
+    Terrain& terrain = this->terrain();
+    terrain.place(glm::dvec3(state.camera.position));
     const glm::dvec3 toSun = glm::dvec3(state.sun.direction());
-    const double reach = std::min((terrain_->maxAltitude() - terrain_->minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
+    const double reach = std::min((terrain.maxAltitude() - terrain.minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
     shadows_->update(frame.context, state.camera, static_cast<double>(frame.width()) / frame.height(), toSun, state.shadows, reach);
     if (!shadows_->cascades().empty()) {
         auto pass = profiler_.scope("Shadow cascades");
-        shadows_->render(frame.context, [&](ID3D11Buffer* caster) { terrain_->renderDepth(frame.context, frame.shaders, caster); });
+        shadows_->render(frame.context, [&](ID3D11Buffer* caster) { terrain.renderDepth(frame.context, frame.shaders, caster); });
     }
     auto pass = profiler_.scope("Terrain");
     for (const GroundLighting& lighting : atmosphere_->groundLighting(frame, state.atmosphere))
-        terrain_->render(frame, lighting, shadows_->inputs(), clouds_->shadows(), state.terrain);
+        terrain.render(frame, lighting, shadows_->inputs(), clouds_->shadows(), state.terrain);
 }
 
 gpu::FrameConstants Renderer::frameConstants(const State& state, FrameTime time) const {
@@ -167,7 +166,14 @@ bool Renderer::lightShaftsDrawn(const State& state) const {
            atmosphere_->ready(a);
 }
 
-double Renderer::groundY(double x, double z) const { return terrain_->groundY(x, z); }
+Terrain& Renderer::terrain() {
+    if (!terrain_)
+        terrain_ = std::make_unique<Terrain>(device_, loadOrGenerateHeightField(TerrainGeneratorParameters{}, tables_.cacheFolder),
+                                             AtmosphereParameters{}.earthRadius);
+    return *terrain_;
+}
+
+double Renderer::groundY(double x, double z) { return terrain().groundY(x, z); }
 
 RendererStatus Renderer::status(const State& state) {
     return {toneMapping_->latestReading(context_, state.toneMapping), atmosphere_->recomputeProgress(), clouds_->tableProgress(),

@@ -74,8 +74,9 @@ public:
     void render(const State& state, FrameTime time, bool finishWorkNow, ID3D11RenderTargetView* output,
                 const std::function<void(ID3D11RenderTargetView*)>& drawGui);
 
-    // World y of the terrain's surface at (x, z), for the camera's clearance.
-    double groundY(double x, double z) const;
+    // World y of the terrain's surface at (x, z), for the camera's clearance (the height field
+    // is loaded, or generated, on the first call that needs it).
+    double groundY(double x, double z);
     RendererStatus status(const State& state);
     // What each technique records of itself in a capture's header ("firmament.toneMapping.*",
     // "firmament.atmosphere.*"); waits for the GPU.
@@ -94,6 +95,9 @@ public:
 private:
     gpu::FrameConstants frameConstants(const State& state, FrameTime time) const;
     void renderShadowsAndTerrain(FrameContext& frame, const State& state);
+    // The terrain, made from the height field the first time it is needed: a run with the
+    // terrain off never reads the 16 MiB field.
+    Terrain& terrain();
     bool lightShaftsDrawn(const State& state) const;
 
     ID3D11Device* device_;
@@ -105,7 +109,7 @@ private:
     ConstantBuffer<gpu::FrameConstants> frameConstants_;
     std::unique_ptr<OrientationGridPass> orientationGrid_;
     std::unique_ptr<Atmosphere> atmosphere_;
-    std::unique_ptr<Terrain> terrain_;
+    std::unique_ptr<Terrain> terrain_;  // made by terrain()
     std::unique_ptr<CascadedShadowMaps> shadows_;
     std::unique_ptr<LightShafts> lightShafts_;
     std::unique_ptr<Clouds> clouds_;

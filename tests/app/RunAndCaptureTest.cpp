@@ -37,7 +37,7 @@ void expectNotUniform(const Rgba8Image& image) {
 
 // A cheap scene for the tests of plumbing (panels, flights, operators): the sky and the
 // orientation grid, without the clouds (seconds a frame on the CPU, whatever the image size)
-// and the terrain (its height field loaded at every start).
+// and the terrain (its cascades and draw; with it off, the height field is not even read).
 const std::vector<std::wstring> kCheapScene{L"--set", L"clouds.enabled=off", L"--set", L"terrain.enabled=off"};
 
 std::vector<std::wstring> withCheapScene(std::vector<std::wstring> arguments) {
@@ -66,6 +66,9 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
                                     L"--set", L"terrain.enabled=off", L"--set", L"camera.fieldOfView=60"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("GPU time per pass over 4 frames at 320x200"), std::string::npos) << run.output;
+    // With the terrain off, the 16 MiB height field is never read (nor generated).
+    EXPECT_EQ(run.output.find("terrain: height field"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("terrain: generating the height field"), std::string::npos) << run.output;
     for (const char* pass : {"Scene luminance", "Light adaptation", "Tone mapping"})
         EXPECT_NE(run.output.find(pass), std::string::npos) << pass << "\n" << run.output;
 
@@ -275,6 +278,10 @@ TEST(WindowedRun, PresentsThroughTheSwapChainAndCaptures) {
                                                           L"--capture", (folder / "window.png").wstring()});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
     EXPECT_NE(run.output.find("GPU time per pass over 5 frames"), std::string::npos) << run.output;
+    // The default scene draws the terrain: its height field is read (the headless test's run
+    // without it must not say so).
+    EXPECT_TRUE(run.output.find("terrain: height field loaded") != std::string::npos || run.output.find("terrain: height field generated") != std::string::npos)
+        << run.output;
     const Rgba8Image image = readPng(folder / "window.png");
     EXPECT_GT(image.width, 0);
     EXPECT_GT(image.height, 0);
