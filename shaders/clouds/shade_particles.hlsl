@@ -42,75 +42,7 @@ SamplerState linearWrap : register(s0);
 SamplerState linearClamp : register(s1);
 
 #include "clouds/particle_lighting.hlsli"
-
-// The atmosphere's tables: CLOUD_ATMOSPHERE 1 Yusov 2013's, 2 Bruneton and Neyret 2008's.
-#if CLOUD_ATMOSPHERE == 2
-#include "atmosphere/bruneton/lookup.hlsli"
-cbuffer BrunetonBuffer : register(b4) { BrunetonConstants bruneton; };
-Texture2D<float4> transmittanceLut : register(t5);
-Texture2D<float4> irradianceLut : register(t6);
-Texture3D<float4> inscatterLut : register(t7);
-#include "atmosphere/bruneton/camera_segment.hlsli"
-#else
-Texture2D<float4> netDensityLut : register(t5);
-Texture3D<float4> singleScatteringLut : register(t6);
-Texture3D<float4> highOrderScatteringLut : register(t7);
-Texture3D<float4> multipleScatteringLut : register(t8);
-Texture2D<float4> ambientLightLut : register(t9);
-#include "atmosphere/yusov/view_ray.hlsli"
-#endif
-
-// The sun's transmittance from a point `altitude` above the surface to the sun, cosSunZenith from
-// the point's vertical, and the sky's irradiance on a horizontal surface there.
-void lightAt(float altitude, float cosSunZenith, out float3 sunLight, out float3 skyLight) {
-#if CLOUD_ATMOSPHERE == 2
-    float r = atmosphere.earth.x + altitude;
-    sunLight = sunTransmittanceAt(atmosphere, bruneton, transmittanceLut, linearClamp, r, cosSunZenith);
-    skyLight = irradianceAt(atmosphere, bruneton, irradianceLut, linearClamp, r, cosSunZenith);
-#else
-    sunLight = sunTransmittance(atmosphere, netDensityLut, linearClamp, altitude, cosSunZenith);
-    float width = atmosphere.netDensityLutSize.z;
-    skyLight = ambientLightLut.SampleLevel(linearClamp, float2(unitToTexture(saturate(cosSunZenith * 0.5 + 0.5), width), 0.5), 0).rgb;
-#endif
-}
-
-#if CLOUD_ATMOSPHERE != 2
-// The camera's ray through Yusov's atmosphere up to `distance` along `direction`.
-ViewRay cameraRay(float3 direction, float distance, out bool inAtmosphere) {
-    float3 earthCentre = float3(0.0, -atmosphere.earth.x, 0.0);
-    ViewRay ray;
-    ray.camera = frame.cameraPosition.xyz;
-    ray.start = frame.cameraPosition.xyz - earthCentre;
-    ray.viewDir = direction;
-    ray.offset = 0.0;
-    ray.endsAtBoundary = false;
-    inAtmosphere = clipRayToAtmosphere(atmosphere, ray.start, direction, ray.offset);
-    ray.hitsGround = inAtmosphere && rayHitsGround(atmosphere, ray.start, direction);
-    float toEnd = inAtmosphere ? rayLengthInAtmosphere(atmosphere, ray.start, direction, ray.hitsGround) : 0.0;
-    ray.length = clamp(distance - ray.offset, 0.0, toEnd);
-    inAtmosphere = inAtmosphere && ray.length > 0.0;
-    return ray;
-}
-#endif
-
-// From the camera to `distance` along `direction`: the transmittance, and the light scattered in
-// (per unit sun irradiance; Yusov's by the atmosphere's render modes).
-void cameraToCloud(float3 direction, float distance, out float3 transmittance, out float3 inscattered) {
-#if CLOUD_ATMOSPHERE == 2
-    CameraSegment segment = brunetonCameraSegment(direction, frame.directionToSun.xyz, distance, transmittanceLut, inscatterLut, linearClamp);
-    transmittance = segment.transmittance;
-    inscattered = segment.light;
-#else
-    bool inAtmosphere;
-    ViewRay ray = cameraRay(direction, distance, inAtmosphere);
-    transmittance = 1.0;
-    inscattered = 0.0;
-    if (inAtmosphere) {
-        transmittance = transmittanceTo(ray, ray.length);
-        inscattered = scatteringAlongRay(ray, frame.directionToSun.xyz, shading.modes.x, shading.modes.y, int(shading.modes.z));
-    }
-#endif
-}
+#include "clouds/cloud_atmosphere.hlsli"
 
 ShapeVertex vs_main(uint vertexId : SV_VertexID, uint instance : SV_InstanceID) { return shapeVertex(vertexId, instance); }
 
@@ -127,11 +59,8 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
 
     // The light at the particle's centre.
     float3 sun = frame.directionToSun.xyz;
-    float3 fromCentre = p.centre.xyz + float3(0.0, atmosphere.earth.x, 0.0);
-    float altitude = length(fromCentre) - atmosphere.earth.x;
-    float cosSunZenith = dot(normalize(fromCentre), sun);
     float3 sunLight, skyLight;
-    lightAt(altitude, cosSunZenith, sunLight, skyLight);
+    lightAtPoint(p.centre.xyz, sunLight, skyLight);
     sunLight *= particleSunTransmittance[input.slot];
 
     // The sun in the particle's unit-sphere space.
@@ -144,7 +73,7 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
 
     // Through the atmosphere from the camera to where the ray enters the particle.
     float3 transmittance, inscattered;
-    cameraToCloud(direction, px.start, transmittance, inscattered);
+    atmosphereSegment(frame.cameraPosition.xyz, direction, px.start, shading.modes, transmittance, inscattered);
     fragment.colour = frame.sunIrradiance.rgb * (inscattered + transmittance * radiance);
     fragment.extinction = px.opticalDepth / (px.end - px.start);
     fragment.front = px.start;

@@ -33,10 +33,20 @@ inline constexpr std::array<std::string_view, 3> kBlendingPathNames{"Auto", "Ras
 enum class ShaftsFromClouds { None, ShadowMap, TransparencyMap };
 inline constexpr std::array<std::string_view, 3> kShaftsFromCloudsNames{"None", "Shadow map", "Transparency map"};
 
+// "Renderer": the particles shaded from their tables (Yusov 2014), or the path-traced reference of
+// the medium they describe (docs/clouds.md, "Path-traced reference"), as brute force sits beside
+// epipolar sampling.
+enum class CloudRenderer { Particles, PathTracedReference };
+inline constexpr std::array<std::string_view, 2> kCloudRendererNames{"Particles", "Reference (path traced)"};
+
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with
     // either atmosphere model drawn alone).
     bool enabled = true;
+    CloudRenderer renderer = CloudRenderer::Particles;  // "Renderer"
+    // "Reference paths per frame": paths per pixel the reference adds each frame to its
+    // accumulation, which starts over when the view, the sun or the clouds change.
+    int referencePaths = 1;
     // "Volumetric blending": particles that intersect are merged as volumes (Yusov 2014); off,
     // plain back-to-front alpha blending, for comparison.
     bool volumetricBlending = true;
@@ -83,6 +93,8 @@ struct CloudSettings {
 
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable clouds");
+        v.choice("renderer", renderer, kCloudRendererNames, "Renderer");
+        v.field("referencePaths", referencePaths, {1, 64}, "Reference paths per frame");
         v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
         v.field("shadows", shadows, "Cloud shadows");
         v.choice("shaftsFromClouds", shaftsFromClouds, kShaftsFromCloudsNames, "Shafts from clouds");

@@ -7,6 +7,7 @@
 #include "tables/TimeTables.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -27,6 +28,14 @@ ShaderKey shadePixelKey(bool bruneton, ParticleBlending blending) {
 }
 }  // namespace
 
+namespace {
+// The atmosphere model's tables in the order clouds/cloud_atmosphere.hlsli reads them (t5..t9).
+std::array<ID3D11ShaderResourceView*, 5> atmosphereViews(const ScatteringLookup* y, const BrunetonLookup* b, bool bruneton) {
+    if (bruneton) return {b->transmittance, b->irradiance, b->inscatter, nullptr, nullptr};
+    return {y->netDensity, y->singleScattering, y->highOrderScattering, y->multipleScattering, y->ambientLight};
+}
+}  // namespace
+
 Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
     : storage_(storage),
       tables_("clouds", "Clouds: particle tables"),
@@ -39,7 +48,8 @@ Clouds::Clouds(ID3D11Device* device, const TableStorage& storage)
       blending_(device),
       lowResolution_(device),
       opacity_(device),
-      shadowMap_(device) {
+      shadowMap_(device),
+      reference_(device) {
     log::info(std::string("clouds: the device ") + (blendingSupport_.rasterizerOrderedViews ? "supports" : "has no") +
               " rasterizer-ordered views; Blending path Auto: " +
               std::string(describeParticleBlending(chooseParticleBlending(true, BlendingPath::Auto, blendingSupport_))));
@@ -100,6 +110,7 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
 }
 
 std::string Clouds::blendingStatus() const {
+    if (referenceDrawn_) return "Reference (path traced): " + std::to_string(reference_.pathsPerPixel()) + " paths per pixel";
     std::string status(describeParticleBlending(blending_.path()));
     if (blending_.path() == ParticleBlending::PerPixelLists) {
         if (const std::optional<VolumeBlendingPass::Overflow> o = blending_.latestOverflow())
@@ -120,14 +131,20 @@ void Clouds::update(FrameContext& frame, const CloudSettings& settings) {
         return;
     }
     const OpticalDepthTableSize& n = tableParameters(settings).opticalDepth;
-    particles_.update(frame, settings,
+    const bool reference = settings.enabled && settings.renderer == CloudRenderer::PathTracedReference && settings.showParticles == ParticleView::Off;
+    if (!reference) referenceSeconds_.reset();
+    else if (!referenceSeconds_) referenceSeconds_ = frame.timeSeconds;
+    FrameContext clock = frame;  // the particles' time: frozen while the reference accumulates
+    if (referenceSeconds_) clock.timeSeconds = *referenceSeconds_;
+    particles_.update(clock, settings,
                       glm::vec4(static_cast<float>(n.entryZenith), static_cast<float>(n.entryAzimuth), static_cast<float>(n.directionZenith),
                                 static_cast<float>(n.directionAzimuth)));
     if (settings.showParticles != ParticleView::BoundingShapes) updateTables(frame, settings, frame.finishWorkNow);
     const ParticleTablePrecomputation* tables = tables_.current();
+    if (reference) reference_.buildIndex(frame, particles_, settings);
     if (settings.enabled && settings.showParticles == ParticleView::Off && tables) {
         scatteringTable(frame.device);
-        if (settings.lightOcclusion) opacity_.compute(frame, particles_, tables->tables(), settings);
+        if (settings.lightOcclusion && !reference) opacity_.compute(frame, particles_, tables->tables(), settings);
         else opacity_.clear(frame.device, frame.context, particles_.capacity());
         if (settings.shadows) shadowMap_.render(frame, particles_, tables->tables(), settings);
         else shadowMap_.clear(frame.context);
@@ -146,7 +163,10 @@ void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& setting
     const ParticleTablePrecomputation* tables = tables_.current();
     if (!tables) return;
     const bool lit = (atmosphere.yusov && atmosphere.yusov->ready) || (atmosphere.bruneton && atmosphere.bruneton->ready);
+    referenceDrawn_ = false;
     if (settings.showParticles == ParticleView::OpticalDepth) drawOpticalDepth(frame, tables->tables());
+    else if (settings.showParticles == ParticleView::Off && settings.enabled && lit && settings.renderer == CloudRenderer::PathTracedReference)
+        drawReference(frame, settings, atmosphere);
     else if (settings.showParticles == ParticleView::Off && settings.enabled && lit)
         drawShaded(frame, tables->tables(), atmosphere, chooseParticleBlending(settings.volumetricBlending, settings.blendingPath, blendingSupport_),
                    settings.downscale);
@@ -215,19 +235,10 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         const BrunetonLookup* b = atmosphere.bruneton;
         ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere, shadingConstants_.get(), bruneton ? b->bruneton : nullptr};
         context->PSSetConstantBuffers(2, 3, buffers);
-        ID3D11ShaderResourceView* extra[8] = {tables.opticalDepth.srv.Get(), depth, scattering.srv.Get()};
-        if (bruneton) {
-            extra[3] = b->transmittance;
-            extra[4] = b->irradiance;
-            extra[5] = b->inscatter;
-        } else {
-            extra[3] = y->netDensity;
-            extra[4] = y->singleScattering;
-            extra[5] = y->highOrderScattering;
-            extra[6] = y->multipleScattering;
-            extra[7] = y->ambientLight;
-        }
-        context->PSSetShaderResources(2, 8, extra);
+        ID3D11ShaderResourceView* extra[3] = {tables.opticalDepth.srv.Get(), depth, scattering.srv.Get()};
+        context->PSSetShaderResources(2, 3, extra);
+        const std::array<ID3D11ShaderResourceView*, 5> air = atmosphereViews(y, b, bruneton);
+        context->PSSetShaderResources(5, 5, air.data());
         ID3D11ShaderResourceView* sunTransmittance = opacity_.sunTransmittance();
         context->PSSetShaderResources(10, 1, &sunTransmittance);
         ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
@@ -247,6 +258,42 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     }
     context->OMSetRenderTargets(1, &hdr, nullptr);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+}
+
+namespace {
+// FNV-1a over bytes: the reference's digest of what its picture depends on.
+std::uint64_t digest(std::uint64_t hash, const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (size_t k = 0; k < size; ++k) hash = (hash ^ bytes[k]) * 0x100000001b3ull;
+    return hash;
+}
+}  // namespace
+
+void Clouds::drawReference(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere) {
+    ID3D11DeviceContext* context = frame.context;
+    const bool bruneton = !(atmosphere.yusov && atmosphere.yusov->ready);
+    const ScatteringLookup* y = atmosphere.yusov;
+    const BrunetonLookup* b = atmosphere.bruneton;
+    glm::uvec4 modes(0u);
+    if (!bruneton)
+        modes = glm::uvec4(static_cast<unsigned>(y->singleMode), static_cast<unsigned>(y->multipleMode), static_cast<unsigned>(y->integrationSteps), 0u);
+    // Everything the picture depends on but the clock, which the reference holds still.
+    gpu::FrameConstants view = frame.constants;
+    view.time = glm::vec4(0.0f);
+    std::uint64_t key = digest(0xcbf29ce484222325ull, &view, sizeof view);
+    key = digest(key, &particles_.constants(), sizeof(gpu::CloudFieldConstants));
+    const unsigned choices[] = {static_cast<unsigned>(settings.particleDensity), bruneton ? 2u : 1u, modes.x, modes.y, modes.z};
+    key = digest(key, choices, sizeof choices);
+    ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere};
+    context->CSSetConstantBuffers(2, 1, buffers);
+    ID3D11Buffer* brunetonBuffer = bruneton ? b->bruneton : nullptr;
+    context->CSSetConstantBuffers(4, 1, &brunetonBuffer);
+    const std::array<ID3D11ShaderResourceView*, 5> air = atmosphereViews(y, b, bruneton);
+    context->CSSetShaderResources(5, 5, air.data());
+    ID3D11SamplerState* clamp = bruneton ? b->linearClamp : y->linearClamp;
+    context->CSSetSamplers(1, 1, &clamp);
+    reference_.trace(frame, particles_, settings, key, bruneton, modes);
+    referenceDrawn_ = true;
 }
 
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the

@@ -8,6 +8,7 @@
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
 #include "clouds/LowResolution.h"
+#include "clouds/CloudReference.h"
 #include "clouds/CloudShadowMap.h"
 #include "clouds/ParticleOpacity.h"
 #include "clouds/VolumeBlendingPass.h"
@@ -53,6 +54,7 @@ public:
     // The particle tables for `settings`, computed or loaded now (tests, benchmarks).
     const ParticleTablePrecomputation& tables(FrameContext& frame, const CloudSettings& settings);
     CloudParticles& particles() { return particles_; }
+    const CloudReference& reference() const { return reference_; }
     const ParticleOpacity& opacity() const { return opacity_; }
     // 0..1 while the particle tables are computed over frames.
     std::optional<double> tableProgress() const;
@@ -74,6 +76,8 @@ private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);
     void drawOpticalDepth(FrameContext& frame, const ParticleTables& tables);
     void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending, int downscale);
+    // Renderer: Reference (path traced): the paths added and their mean over the frame.
+    void drawReference(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere);
     const Texture3D& scatteringTable(ID3D11Device* device);
 
     TableStorage storage_;
@@ -90,6 +94,11 @@ private:
     CloudLowResolution lowResolution_;
     ParticleOpacity opacity_;
     CloudShadowMap shadowMap_;
+    CloudReference reference_;
+    // The reference traces the particles of the moment it was chosen: their clock stands still
+    // while it is on, so that its paths can accumulate.
+    std::optional<double> referenceSeconds_;
+    bool referenceDrawn_ = false;
 };
 
 }  // namespace firmament

@@ -5,6 +5,9 @@
 #include "FrameTest.h"
 #include "clouds/CloudField.h"
 #include "clouds/CloudParticles.h"
+#include "clouds/CloudPathTracer.h"
+#include "clouds/CloudReference.h"
+#include "tables/StagedComputation.h"
 #include "clouds/CloudShadowMap.h"
 #include "clouds/LightSpace.h"
 #include "clouds/ParticleOpacity.h"
@@ -21,6 +24,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <random>
 #include <tuple>
 
 namespace firmament::test {
@@ -491,6 +495,182 @@ TEST_F(CloudParticlesTest, TheCloudShadowMapGivesEachPointTheParticlesTransmitta
         // Measured: below, 0.003 and none beyond; in the middle, 0.065 and 8% beyond.
         EXPECT_LT(sum / points, level < 2 ? 0.01 : 0.08) << name;
         EXPECT_LE(beyond, points / (level < 2 ? 50 : 10)) << name;
+    }
+}
+
+}  // namespace
+}  // namespace firmament::test
+
+namespace firmament::test {
+namespace {
+
+// Runs an entry of the reference's test kernel (tests/shaders/clouds/trace_rays.hlsl) over
+// `count` rays (origin, direction: 32 bytes each) with `constants`; one float4 per ray back.
+std::vector<glm::vec4> runReferenceKernel(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, CloudReference& reference,
+                                          CloudParticles& particles, ID3D11Buffer* frameConstants, const char* entry,
+                                          const gpu::CloudReferenceConstants& constants, const void* rays, unsigned count) {
+    const StructuredBuffer input = createStructuredBuffer(device, count, 32, rays, "test rays");
+    const StructuredBuffer results = createStructuredBuffer(device, count, 16, nullptr, "test results");
+    reference.setConstants(context, constants);
+    ID3D11Buffer* buffers[] = {frameConstants, particles.fieldConstants()};
+    context->CSSetConstantBuffers(0, 2, buffers);
+    reference.bindMedium(context, particles);
+    context->CSSetShaderResources(0, 1, input.srv.GetAddressOf());
+    context->CSSetUnorderedAccessViews(0, 1, results.uav.GetAddressOf(), nullptr);
+    context->CSSetShader(shaders.computeShader({"clouds/trace_rays.hlsl", entry, "cs_5_0", {}}), nullptr, 0);
+    context->Dispatch(groupCount(count, 64), 1, 1);
+    ID3D11UnorderedAccessView* noView = nullptr;
+    context->CSSetUnorderedAccessViews(0, 1, &noView, nullptr);
+    ID3D11ShaderResourceView* none[13] = {};
+    context->CSSetShaderResources(0, 13, none);
+    return fromBytes<glm::vec4>(readBuffer(device, context, results.buffer.Get()), count);
+}
+
+// The medium the GPU reference walks (clouds/reference_medium.hlsli: the particles found through
+// the cloud grid's rings) against the CPU twin's (ParticleMedium: a uniform grid of its own) at
+// points in and around the particles, and the walk's majorant against the extinction it bounds.
+TEST_F(CloudParticlesTest, TheGpuReferencesMediumIsTheParticlesSummedDensity) {
+    const glm::vec3 position(0.0f, 1500.0f, 0.0f);
+    DenseField field = denseField(0.6f, position);
+    ASSERT_FALSE(field.model.empty());
+    FrameContext frame = frameAt(position, 0.0);
+    CloudReference reference(device());
+    reference.buildIndex(frame, *clouds, field.settings);
+    // Points about particles, out to 1.3 times their radius, where neighbouring cells' particles reach.
+    struct Point {
+        glm::vec4 origin, direction;
+    };
+    std::vector<Point> points;
+    std::mt19937 pick(5);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    for (size_t k = 0; k < 4096; ++k) {
+        const ModelParticle& q = field.model[(k * 7919u) % field.model.size()];
+        const glm::vec3 offset(unit(pick) * 1.3f * q.horizontalRadius, unit(pick) * 1.3f * q.verticalRadius, unit(pick) * 1.3f * q.horizontalRadius);
+        const glm::vec3 direction = glm::normalize(glm::vec3(unit(pick), unit(pick), unit(pick)) + glm::vec3(0.0f, 0.0f, 1e-3f));
+        points.push_back({glm::vec4(q.centre + offset, 0.0f), glm::vec4(direction, 0.0f)});
+    }
+    const auto count = static_cast<unsigned>(points.size());
+    gpu::CloudReferenceConstants c{};
+    c.paths = glm::uvec4(0u, 0u, 0u, count);
+    c.options = glm::uvec4(static_cast<unsigned>(field.settings.particleDensity), 0u, kReferenceEventLimit, 0u);
+    const std::vector<glm::vec4> gpuResults =
+        runReferenceKernel(device(), context(), *testShaderLibrary, reference, *clouds, frameConstants->get(), "extinction_at", c, points.data(), count);
+
+    const ParticleMedium medium(field.model, kEarthRadius, field.settings.particleDensity, 0.07);
+    int inCloud = 0, overlapping = 0, wrong = 0, unbounded = 0;
+    for (unsigned k = 0; k < count; ++k) {
+        const glm::dvec3 p(points[k].origin);
+        const double cpu = medium.extinction(p), gpuExtinction = gpuResults[k].x, majorant = gpuResults[k].y;
+        inCloud += cpu > 0.0;
+        int reaching = 0;
+        for (const ModelParticle& q : field.model) reaching += glm::length(glm::dvec3(q.centre) - p) < std::max(q.horizontalRadius, q.verticalRadius);
+        overlapping += reaching > 1 && cpu > 0.0;
+        const bool differs = !(std::abs(gpuExtinction - cpu) <= 1e-4 * 0.07 + 1e-3 * cpu);
+        wrong += differs;
+        unbounded += gpuExtinction > majorant * 1.0001;
+        if ((differs || gpuExtinction > majorant * 1.0001) && wrong + unbounded <= 5)
+            std::printf("point %u: GPU %.6f (majorant %.6f), CPU %.6f\n", k, gpuExtinction, majorant, cpu);
+    }
+    std::printf("%u points: %d in a cloud, %d where particles overlap; %d differ, %d above the majorant\n", count, inCloud, overlapping, wrong, unbounded);
+    EXPECT_GT(inCloud, static_cast<int>(count / 4)) << "the test needs points in the clouds";
+    EXPECT_GT(overlapping, static_cast<int>(count / 20)) << "the test needs points where particles overlap";
+    EXPECT_EQ(wrong, 0);
+    EXPECT_EQ(unbounded, 0);
+}
+
+// The path-traced reference on the GPU (clouds/reference_paths.hlsli through the index of
+// clouds/reference_index.hlsl) against its CPU twin (CloudPathTracer over a ParticleMedium, with
+// a uniform grid of its own) on the same particles and rays, under the same lighting: a white
+// sun, a grey sky and, for half of the rays, a Lambertian ground. The two share no code, so a
+// fault in either index, walk, tracker or path shows as a difference beyond the Monte Carlo
+// noise. Each ray's estimates are compared by their standard errors (at most two of 192 beyond 4
+// sigma); the means over the rays within 4 of their standard errors, or 3% where that is less.
+TEST_F(CloudParticlesTest, TheGpuReferenceMatchesTheCpuPathTracerOnTheSameParticles) {
+    const glm::vec3 position(0.0f, 1500.0f, 0.0f);
+    DenseField field = denseField(0.6f, position);
+    ASSERT_FALSE(field.model.empty());
+    FrameContext frame = frameAt(position, 0.0);
+    CloudReference reference(device());
+    reference.buildIndex(frame, *clouds, field.settings);
+
+    // 96 rays up into the layer from below, 96 down into it from above (spread over the field).
+    struct Ray {
+        glm::vec4 origin, direction;
+    };
+    std::vector<Ray> rays;
+    std::mt19937 pick(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int k = 0; k < 192; ++k) {
+        const bool above = k >= 96;
+        const float azimuth = 6.2831853f * unit(pick), elevation = 0.15f + 1.2f * unit(pick);
+        glm::vec3 direction(std::cos(elevation) * std::cos(azimuth), std::sin(elevation), std::cos(elevation) * std::sin(azimuth));
+        glm::vec3 origin = position + glm::vec3((unit(pick) - 0.5f) * 6000.0f, 0.0f, (unit(pick) - 0.5f) * 6000.0f);
+        if (above) {
+            direction.y = -direction.y;
+            origin.y = 5200.0f;
+        }
+        rays.push_back({glm::vec4(origin, 0.0f), glm::vec4(direction, 0.0f)});
+    }
+    const auto count = static_cast<unsigned>(rays.size());
+    constexpr unsigned kPaths = 48;
+    const glm::vec3 sunIrradiance(1.0f);
+    constexpr float kSky = 0.1f, kGroundHeight = 0.0f;
+    const glm::vec3 albedo(0.3f, 0.3f, 0.3f);
+
+    std::vector<glm::vec4> gpuResults[2];
+    for (int ground = 0; ground < 2; ++ground) {
+        gpu::CloudReferenceConstants c{};
+        c.paths = glm::uvec4(0u, kPaths, 977u + ground, count);
+        c.options = glm::uvec4(static_cast<unsigned>(field.settings.particleDensity), static_cast<unsigned>(ground), kReferenceEventLimit, 0u);
+        c.light = glm::vec4(sunIrradiance, kSky);
+        c.ground = glm::vec4(kGroundHeight, albedo);
+        gpuResults[ground] =
+            runReferenceKernel(device(), context(), *testShaderLibrary, reference, *clouds, frameConstants->get(), "main", c, rays.data(), count);
+    }
+
+    const ParticleMedium medium(field.model, kEarthRadius, field.settings.particleDensity, 0.07);
+    std::mt19937_64 random(11);
+    for (int ground = 0; ground < 2; ++ground) {
+        CloudLighting lighting;
+        lighting.toSun = glm::dvec3(sun.direction());
+        lighting.sunIrradiance = glm::dvec3(sunIrradiance);
+        lighting.sky = [](glm::dvec3) { return glm::dvec3(kSky); };
+        if (ground) {
+            lighting.groundHeight = kGroundHeight;
+            lighting.groundAlbedo = glm::dvec3(albedo);
+        }
+        const CloudPathTracer tracer(medium, lighting, {});
+        int beyond = 0, lit = 0;
+        double gpuSum = 0.0, cpuSum = 0.0, variance = 0.0, worst = 0.0;
+        for (unsigned k = 0; k < count; ++k) {
+            const MediumRay ray{glm::dvec3(rays[k].origin), glm::dvec3(rays[k].direction)};
+            double sum = 0.0, squares = 0.0;
+            for (unsigned n = 0; n < kPaths; ++n) {
+                const glm::dvec3 l = tracer.radiance(ray, random);
+                const double grey = (l.x + l.y + l.z) / 3.0;
+                sum += grey;
+                squares += grey * grey;
+            }
+            const double cpu = sum / kPaths, cpuError2 = std::max(squares / kPaths - cpu * cpu, 0.0) / kPaths;
+            const glm::vec4 g = gpuResults[ground][k];
+            const double gpuGrey = (g.x + g.y + g.z) / 3.0, gpuError2 = static_cast<double>(g.w) * g.w;
+            const double sigma = std::sqrt(cpuError2 + gpuError2 + 1e-12);
+            const double z = std::abs(gpuGrey - cpu) / sigma;
+            worst = std::max(worst, z);
+            beyond += z > 4.0;
+            lit += cpu > 1.5 * kSky;
+            gpuSum += gpuGrey;
+            cpuSum += cpu;
+            variance += cpuError2 + gpuError2;
+            if (z > 4.0 && beyond <= 5)
+                std::printf("ray %u: GPU %.4f +- %.4f, CPU %.4f +- %.4f\n", k, gpuGrey, std::sqrt(gpuError2), cpu, std::sqrt(cpuError2));
+        }
+        const double meanSigma = std::sqrt(variance) / count;
+        std::printf("ground %s: %u rays of %u paths, %d lit by the clouds; mean GPU %.4f, CPU %.4f (+- %.4f); worst %.1f sigma, %d beyond 4\n",
+                    ground ? "on" : "off", count, kPaths, lit, gpuSum / count, cpuSum / count, meanSigma, worst, beyond);
+        EXPECT_GT(lit, static_cast<int>(count / 4)) << "the test needs rays that meet clouds";
+        EXPECT_LE(beyond, 2);
+        EXPECT_LT(std::abs(gpuSum - cpuSum) / count, std::max(4.0 * meanSigma, 0.03 * cpuSum / count));
     }
 }
 

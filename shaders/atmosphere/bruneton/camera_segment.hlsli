@@ -3,9 +3,10 @@
 // Bruneton and Neyret 2008 between the camera and a point at a distance along a view ray, for a
 // technique that draws something translucent in the air (the clouds): the light scattered into
 // the stretch, S(x, v) - T(x -> x0) S(x0, v), per unit sun irradiance, and the transmittance
-// T(x -> x0), as atmosphere/bruneton/render.hlsl computes them for geometry. A camera above the
-// atmosphere starts where the ray enters it. The includer declares cbuffers `frame`,
-// `atmosphere` and `bruneton`.
+// T(x -> x0), as atmosphere/bruneton/render.hlsl computes them for geometry; from any point
+// (brunetonSegment: the clouds' path-traced reference starts rays inside a cloud) or from the
+// camera. A ray from above the atmosphere starts where it enters it. The includer declares
+// cbuffers `frame`, `atmosphere` and `bruneton`.
 #include "atmosphere/bruneton/lookup.hlsli"
 
 struct CameraSegment {
@@ -13,14 +14,14 @@ struct CameraSegment {
     float3 transmittance;
 };
 
-CameraSegment brunetonCameraSegment(float3 v, float3 s, float distance, Texture2D<float4> transmittanceLut, Texture3D<float4> inscatterLut,
-                                    SamplerState linearClamp) {
+CameraSegment brunetonSegment(float3 origin, float3 v, float3 s, float distance, Texture2D<float4> transmittanceLut, Texture3D<float4> inscatterLut,
+                              SamplerState linearClamp) {
     CameraSegment segment;
     segment.light = 0.0;
     segment.transmittance = 1.0;
     float rg = atmosphere.earth.x, rt = atmosphere.earth.z;
-    float3 x = frame.cameraPosition.xyz + float3(0.0, rg, 0.0);
-    float3 c = frame.cameraPosition.xyz;
+    float3 x = origin + float3(0.0, rg, 0.0);
+    float3 c = origin;
     float rho2 = dot(c.xz, c.xz) + c.y * (2.0 * rg + c.y);
     float h = rho2 / (length(x) + rg);
     float r = rg + h;
@@ -49,6 +50,11 @@ CameraSegment brunetonCameraSegment(float3 v, float3 s, float distance, Texture2
     float4 inscatter = max(fromCamera - segment.transmittance.rgbr * fromEnd, 0.0);
     segment.light = max(inscatter.rgb * rayleighPhase(nu) + mieFromRed(atmosphere, inscatter) * miePhase(nu, atmosphere.mieScattering.w), 0.0);
     return segment;
+}
+
+CameraSegment brunetonCameraSegment(float3 v, float3 s, float distance, Texture2D<float4> transmittanceLut, Texture3D<float4> inscatterLut,
+                                    SamplerState linearClamp) {
+    return brunetonSegment(frame.cameraPosition.xyz, v, s, distance, transmittanceLut, inscatterLut, linearClamp);
 }
 
 #endif

@@ -3,7 +3,8 @@
 // of the particles' bounding shapes; the blending (volume-aware or alpha, the pixel-ordering path)
 // and what the running path reports, the resolution the clouds are rendered at, and the light
 // occlusion's light-space map and early exit; the clouds' shadows and how the light shafts see
-// them. The grid's size in cells and particles is shown under it.
+// them; the renderer (the particles, or the path-traced reference and its paths per frame). The
+// grid's size in cells and particles is shown under it.
 #include "clouds/CloudField.h"
 #include "clouds/CloudGrid.h"
 #include "ui/panels/TechniquePanels.h"
@@ -16,7 +17,8 @@ namespace firmament::panels {
 
 void clouds(PanelContext& panel) {
     const CloudSettings& c = panel.model.state.clouds;
-    editSettings(panel, "clouds", {"enabled"});
+    editSettings(panel, "clouds", {"enabled", "renderer"});
+    if (c.renderer == CloudRenderer::PathTracedReference) editSettings(panel, "clouds", {"referencePaths"});
     const AtmosphereSettings& a = panel.model.state.atmosphere;
     if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});

@@ -1,0 +1,122 @@
+#include "clouds/CloudReference.h"
+
+#include "clouds/CloudParticles.h"
+#include "gpu/CommonStates.h"
+#include "render/FrameContext.h"
+#include "tables/StagedComputation.h"
+
+#include <algorithm>
+
+namespace firmament {
+
+namespace {
+const ShaderKey kListShader{"clouds/reference_index.hlsl", "list_particles", "cs_5_0", {"LIST_PARTICLES=1"}};
+const ShaderKey kMajorantShader{"clouds/reference_index.hlsl", "cell_majorants", "cs_5_0", {}};
+const ShaderKey kCompositeVertexShader{"clouds/reference_composite.hlsl", "vs_main", "vs_5_0", {}};
+const ShaderKey kCompositePixelShader{"clouds/reference_composite.hlsl", "ps_main", "ps_5_0", {}};
+ShaderKey traceKey(bool bruneton) { return {"clouds/trace_clouds.hlsl", "main", "cs_5_0", {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1"}}; }
+}  // namespace
+
+CloudReference::CloudReference(ID3D11Device* device) : constants_(device), premultiplied_(states::premultipliedAlpha(device)) {}
+
+void CloudReference::resize(ID3D11Device* device, const CloudSettings& settings) {
+    const int width = settings.effectiveRingDimension() + 2, height = width * settings.rings;
+    if (width == tableWidth_ && height == tableHeight_ && settings.maxLayers == layers_) return;
+    tableWidth_ = width;
+    tableHeight_ = height;
+    layers_ = settings.maxLayers;
+    counts_ = createColorTexture(device, width, height, DXGI_FORMAT_R32_UINT, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    majorants_ = createColorTexture(device, width, height, DXGI_FORMAT_R32_FLOAT, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    slots_ = createStructuredBuffer(device, static_cast<unsigned>(width * height * layers_), 4, nullptr, "cloud reference's cell slots");
+}
+
+void CloudReference::setConstants(ID3D11DeviceContext* context, const gpu::CloudReferenceConstants& constants) { constants_.update(context, constants); }
+
+void CloudReference::buildIndex(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings) {
+    ID3D11DeviceContext* context = frame.context;
+    auto pass = frame.profiler.scope("Clouds: reference index");
+    resize(frame.device, settings);
+    const UINT zero[4] = {};
+    context->ClearUnorderedAccessViewUint(counts_.uav.Get(), zero);
+    ID3D11Buffer* buffers[] = {frame.frameConstants, particles.fieldConstants()};
+    context->CSSetConstantBuffers(0, 2, buffers);
+    context->CSSetConstantBuffers(3, 1, constants_.address());
+    // Each particle into its cell's list.
+    bindCompute(context, frame.shaders.computeShader(kListShader), {nullptr, particles.particlesView(), nullptr, particles.argumentsView()},
+                {counts_.uav.Get(), slots_.uav.Get()});
+    context->DispatchIndirect(particles.particleArguments(), 0);
+    unbindCompute(context, 4, 2);
+    // Each cell's majorant from the lists around it.
+    bindCompute(context, frame.shaders.computeShader(kMajorantShader),
+                {nullptr, particles.particlesView(), nullptr, particles.argumentsView(), nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+                 counts_.srv.Get(), slots_.srv.Get()},
+                {majorants_.uav.Get()});
+    context->Dispatch(groupCount(static_cast<unsigned>(tableWidth_), 8), groupCount(static_cast<unsigned>(tableHeight_), 8), 1);
+    unbindCompute(context, 12, 1);
+}
+
+void CloudReference::bindMedium(ID3D11DeviceContext* context, CloudParticles& particles) const {
+    ID3D11ShaderResourceView* particleView = particles.particlesView();
+    context->CSSetShaderResources(1, 1, &particleView);
+    ID3D11ShaderResourceView* index[] = {counts_.srv.Get(), slots_.srv.Get(), majorants_.srv.Get()};
+    context->CSSetShaderResources(10, 3, index);
+    context->CSSetConstantBuffers(3, 1, constants_.address());
+}
+
+void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings, std::uint64_t key, bool bruneton,
+                           glm::uvec4 modes) {
+    ID3D11DeviceContext* context = frame.context;
+    const int width = frame.width(), height = frame.height();
+    if (accumulation_.width != width || accumulation_.height != height) {
+        accumulation_ = createColorTexture(frame.device, width, height, DXGI_FORMAT_R32G32B32A32_FLOAT,
+                                           D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+        paths_ = 0;
+    }
+    if (key != key_) paths_ = 0;
+    key_ = key;
+    const unsigned added = static_cast<unsigned>(std::clamp(settings.referencePaths, 1, 64));
+    gpu::CloudReferenceConstants c{};
+    c.paths = glm::uvec4(paths_, added, paths_ * 0x9e3779b9u + 0x632be5abu, 0u);
+    c.options = glm::uvec4(static_cast<unsigned>(settings.particleDensity), 1u, kReferenceEventLimit, 0u);
+    c.modes = modes;
+    c.target = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
+    c.ground = glm::vec4(0.0f, kReferenceGroundAlbedo[0], kReferenceGroundAlbedo[1], kReferenceGroundAlbedo[2]);
+    constants_.update(context, c);
+    {
+        auto pass = frame.profiler.scope("Clouds: reference paths");
+        ID3D11Buffer* buffers[] = {frame.frameConstants, particles.fieldConstants()};
+        context->CSSetConstantBuffers(0, 2, buffers);
+        bindMedium(context, particles);
+        ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
+        context->CSSetShaderResources(3, 1, &depth);
+        context->CSSetShader(frame.shaders.computeShader(traceKey(bruneton)), nullptr, 0);
+        context->CSSetUnorderedAccessViews(0, 1, accumulation_.uav.GetAddressOf(), nullptr);
+        context->Dispatch(groupCount(static_cast<unsigned>(width), 8), groupCount(static_cast<unsigned>(height), 8), 1);
+        ID3D11UnorderedAccessView* noView = nullptr;
+        context->CSSetUnorderedAccessViews(0, 1, &noView, nullptr);
+        ID3D11ShaderResourceView* none[13] = {};
+        context->CSSetShaderResources(0, 13, none);
+    }
+    {
+        auto pass = frame.profiler.scope("Clouds: reference mean");
+        ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
+        context->OMSetRenderTargets(1, &hdr, nullptr);
+        context->OMSetBlendState(premultiplied_.Get(), nullptr, 0xffffffffu);
+        context->OMSetDepthStencilState(nullptr, 0);
+        const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
+        context->RSSetViewports(1, &viewport);
+        context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+        context->IASetInputLayout(nullptr);
+        context->VSSetShader(frame.shaders.vertexShader(kCompositeVertexShader), nullptr, 0);
+        context->PSSetShader(frame.shaders.pixelShader(kCompositePixelShader), nullptr, 0);
+        context->PSSetConstantBuffers(3, 1, constants_.address());
+        context->PSSetShaderResources(0, 1, accumulation_.srv.GetAddressOf());
+        context->Draw(3, 0);
+        ID3D11ShaderResourceView* none = nullptr;
+        context->PSSetShaderResources(0, 1, &none);
+        context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+    }
+    paths_ += added;
+}
+
+}  // namespace firmament
