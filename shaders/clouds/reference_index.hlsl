@@ -3,8 +3,9 @@
 //  - list_particles: DispatchIndirect, a thread per particle: the particle's cell recovered from
 //    its centre (the ring it was generated in, and the plane's place under it; generation puts it
 //    within 0.3 of a cell of its cell's middle), its slot appended to the cell's.
-//  - cell_majorants: a thread per cell of every ring's table: the sum of the densities of the
-//    particles that can reach it, times the extinction at density 1.
+//  - cell_majorants: a thread per cell of every ring's table: for each slab of height, the sum of
+//    the densities of the particles that can reach it, times the extinction at density 1. A
+//    particle's altitudes are its centre's within its bounding radius.
 #include "clouds/particle_shape.hlsli"
 #include "clouds/reference_cells.hlsli"
 
@@ -32,10 +33,11 @@ void list_particles(uint3 id : SV_DispatchThreadID) {
 #else
 Texture2D<uint> cellCounts : register(t10);
 StructuredBuffer<uint> cellSlots : register(t11);
-RWTexture2D<float> cellMajorants : register(u0);
+RWStructuredBuffer<float> cellMajorants : register(u0);  // per cell and slab (majorantIndex)
 
-// The densities of ring r's particles in the cells of world index lower..upper (inclusive).
-float densityIn(int ring, int2 lower, int2 upper) {
+// The densities of ring r's particles in the cells of world index lower..upper (inclusive) whose
+// altitudes reach [bottom, top].
+float densityIn(int ring, int2 lower, int2 upper, float bottom, float top) {
     if (ring < 0 || ring >= int(field.layout.x)) return 0.0;
     int2 origin = ringOrigin(uint(ring));
     float sum = 0.0;
@@ -45,7 +47,11 @@ float densityIn(int ring, int2 lower, int2 upper) {
             if (!inSquare(local)) continue;
             uint2 texel = tableTexel(uint(ring), local);
             uint count = min(cellCounts.Load(int3(texel, 0)), field.layout.z);
-            for (uint k = 0; k < count; ++k) sum += max(particles[cellSlots[firstSlot(texel) + k]].shape.y, 0.0);
+            for (uint k = 0; k < count; ++k) {
+                CloudParticle p = particles[cellSlots[firstSlot(texel) + k]];
+                float altitude = altitudeOf(p.centre.xyz), reach = max(p.centre.w, p.shape.x);
+                if (altitude + reach >= bottom && altitude - reach <= top) sum += max(p.shape.y, 0.0);
+            }
         }
     return sum;
 }
@@ -56,10 +62,16 @@ void cell_majorants(uint3 id : SV_DispatchThreadID) {
     if (id.x >= width || id.y >= width * field.layout.x) return;
     int ring = int(id.y / width);
     int2 world = int2(id.x, id.y % width) - 1 + ringOrigin(uint(ring));
+    uint first = majorantIndex(id.xy, 0u);
     // Ring r's own 3 x 3; the finer ring's cells under this one and one around (4 x 4); the
     // coarser ring's cell over it and one around (3 x 3). Arithmetic shifts floor negatives.
-    float sum = densityIn(ring, world - 1, world + 1) + densityIn(ring - 1, world * 2 - 1, world * 2 + 2) +
-                densityIn(ring + 1, (world >> 1) - 1, (world >> 1) + 1);
-    cellMajorants[id.xy] = sum * kCloudExtinction;
+    // Each slab of height, a metre wider each way (the walk looks a centimetre ahead).
+    float height = slabHeight();
+    [loop] for (uint slab = 0; slab < slabCount(); ++slab) {
+        float bottom = shellBottom() + height * float(slab) - 1.0, top = bottom + height + 2.0;
+        float sum = densityIn(ring, world - 1, world + 1, bottom, top) + densityIn(ring - 1, world * 2 - 1, world * 2 + 2, bottom, top) +
+                    densityIn(ring + 1, (world >> 1) - 1, (world >> 1) + 1, bottom, top);
+        cellMajorants[first + slab] = sum * kCloudExtinction;
+    }
 }
 #endif

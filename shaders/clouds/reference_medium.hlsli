@@ -21,7 +21,7 @@
 
 Texture2D<uint> cellCounts : register(t10);      // particles listed per cell; (D + 2) wide, (D + 2) rows per ring
 StructuredBuffer<uint> cellSlots : register(t11);  // per cell, `layers` slots
-Texture2D<float> cellMajorants : register(t12);  // per cell (1/m), as cellCounts
+StructuredBuffer<float> cellMajorants : register(t12);  // per cell and slab of height (1/m; majorantIndex)
 
 static const float kNoCollision = -1.0;
 
@@ -123,11 +123,9 @@ MajorantWalk beginWalk(float3 origin, float3 direction, float tMax) {
     w.stretch = 0;
     w.t = 0.0;
     w.steps = 0;
-    float layers = float(field.layout.z), thickness = field.grid.z;
-    float margin = thickness / layers;  // beyond the highest and lowest particle (half of it)
     float R = frame.planet.x;
-    float2 outer = sphereRoots(origin, direction, R + field.grid.y + 0.5 * thickness + margin);
-    float2 inner = sphereRoots(origin, direction, R + max(field.grid.y - 0.5 * thickness - margin, 1.0));
+    float2 outer = sphereRoots(origin, direction, R + shellTop());
+    float2 inner = sphereRoots(origin, direction, R + shellBottom());
     // The field's column: the outer ring's square and its margin.
     uint last = field.layout.x - 1;
     float size = ringCellSize(last);
@@ -144,7 +142,8 @@ MajorantWalk beginWalk(float3 origin, float3 direction, float tMax) {
 }
 
 // The next stretch [t0, t1] of the walk with a bound of the extinction on it; false at the end.
-// A stretch lies in one cell of its territory, whose majorant holds a tenth of a cell beyond it.
+// A stretch lies in one cell of its territory and one slab of height, whose majorant holds a
+// twentieth of a cell and a metre beyond them.
 bool nextStretch(inout MajorantWalk w, out float t0, out float t1, out float majorant) {
     t0 = 0.0;
     t1 = 0.0;
@@ -178,12 +177,27 @@ bool nextStretch(inout MajorantWalk w, out float t0, out float t1, out float maj
         float leave = end, enter = -3.0e38;
         clipToColumn(w.origin, w.direction, float(world.x) * size, float(world.x + 1) * size, w.origin.x, w.direction.x, enter, leave);
         clipToColumn(w.origin, w.direction, float(world.y) * size, float(world.y + 1) * size, w.origin.z, w.direction.z, enter, leave);
-        // Never stand still: a stretch is at least a centimetre (within the tenth of a cell).
+        // The slab of height: the stretch ends where the ray crosses either of its spheres.
+        uint slab = slabOf(altitudeOf(at + w.direction * 0.01));
+        majorant = cellMajorants[majorantIndex(tableTexel(ring, local), slab)];  // before slab is converted (docs/building.md)
+        float lowest = shellBottom() + float(slab) * slabHeight();
+        float2 below = sphereRoots(w.origin, w.direction, frame.planet.x + lowest);
+        float2 above = sphereRoots(w.origin, w.direction, frame.planet.x + lowest + slabHeight());
+        float past = w.t + 0.005;
+        if (below.y >= below.x) {
+            if (below.x > past) leave = min(leave, below.x);
+            else if (below.y > past) leave = min(leave, below.y);
+        }
+        if (above.y >= above.x) {
+            if (above.x > past) leave = min(leave, above.x);
+            else if (above.y > past) leave = min(leave, above.y);
+        }
+        // Never stand still: a stretch is at least a centimetre (within the twentieth of a cell and
+        // the metre each slab's majorant spares).
         leave = min(max(leave, w.t + 0.01), end);
         t0 = w.t;
         t1 = leave;
         w.t = leave;
-        majorant = cellMajorants.Load(int3(tableTexel(ring, local), 0));
         if (majorant > 0.0) return true;
     }
     return false;

@@ -26,7 +26,7 @@ void CloudReference::resize(ID3D11Device* device, const CloudSettings& settings)
     tableHeight_ = height;
     layers_ = settings.maxLayers;
     counts_ = createColorTexture(device, width, height, DXGI_FORMAT_R32_UINT, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
-    majorants_ = createColorTexture(device, width, height, DXGI_FORMAT_R32_FLOAT, D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
+    majorants_ = createStructuredBuffer(device, static_cast<unsigned>(width * height * 2 * layers_), 4, nullptr, "cloud reference's majorants");
     slots_ = createStructuredBuffer(device, static_cast<unsigned>(width * height * layers_), 4, nullptr, "cloud reference's cell slots");
 }
 

@@ -4,7 +4,7 @@
 // through every bounce, accumulated over frames while nothing changes, and blended over the frame
 // in place of the particles' shading. Its parts:
 //  1. the index (clouds/reference_index.hlsl): each ring's cells list the particles generated in
-//     them, and hold a majorant of the extinction that can reach them;
+//     them, and hold a majorant of the extinction that can reach them per slab of height;
 //  2. the paths (clouds/trace_clouds.hlsl): a thread per pixel adds paths to the accumulation;
 //  3. their mean over the frame (clouds/reference_composite.hlsl).
 // The CPU twin is CloudPathTracer (src/clouds/CloudPathTracer.h) over a ParticleMedium.
@@ -50,7 +50,6 @@ public:
     unsigned pathsPerPixel() const { return paths_; }
 
     ID3D11Texture2D* cellCounts() const { return counts_.texture.Get(); }
-    ID3D11Texture2D* cellMajorants() const { return majorants_.texture.Get(); }
 
 private:
     void resize(ID3D11Device* device, const CloudSettings& settings);
@@ -60,7 +59,7 @@ private:
     int tableWidth_ = 0, tableHeight_ = 0, layers_ = 0;
     Texture2D counts_;     // R32_UINT: particles per cell
     StructuredBuffer slots_;  // uint: `layers` per cell
-    Texture2D majorants_;  // R32_FLOAT: per cell (1/m)
+    StructuredBuffer majorants_;  // float per cell and slab of height (2 per layer; 1/m)
     Texture2D accumulation_;  // R32G32B32A32_FLOAT: the paths' light, and how many reached the scene
     unsigned paths_ = 0;
     std::uint64_t key_ = 0;
