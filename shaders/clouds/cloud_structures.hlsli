@@ -68,8 +68,8 @@ FIRMAMENT_CONSTANT_BUFFER(CloudShadingConstants);
 // The clouds' path-traced reference (clouds/reference_index.hlsl, clouds/trace_clouds.hlsl;
 // docs/clouds.md, "Path-traced reference"). Built by CloudReference (src/clouds/CloudReference.h).
 struct CloudReferenceConstants {
-    uint4 paths;    // x: paths per pixel accumulated before this pass (0: start over); y: paths per pixel it adds; z: a seed; w: rays (the tests' kernel)
-    uint4 options;  // x: the density method (as ParticleTableConstants.options.x); y: 1 with the ground's bounce; z: the bounce limit; w: unused
+    uint4 paths;    // x: passes since the accumulation started over, before this one; y: paths per pixel it adds; z: a seed; w: rays (the tests' kernel)
+    uint4 options;  // x: the density method (as ParticleTableConstants.options.x); y: 1 with the ground's bounce; z: the bounce limit; w: the pixel stride (a pass traces one pixel of every w x w block)
     uint4 modes;    // Yusov's render modes: x single scattering, y multiple, z integration steps (as CloudShadingConstants.modes); w: unused
     float4 target;  // the frame's width, height, 1 / width, 1 / height
     float4 light;   // the tests' constant lighting (CLOUD_ATMOSPHERE 0): rgb the sun's irradiance, w the sky's radiance (grey)

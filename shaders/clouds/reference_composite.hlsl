@@ -10,8 +10,20 @@ Texture2D<float4> accumulated : register(t0);  // sums: rgb the light, a the pat
 
 FullscreenVertex vs_main(uint vertexId : SV_VertexID) { return fullscreenTriangle(vertexId); }
 
+// Runs after the pass that traced, with its constants: paths.x + 1 passes so far, in rounds of
+// stride^2 (clouds/trace_clouds.hlsl). A pixel whose first turn has not come shows its block's
+// first pixel, traced on the round's first pass.
 float4 ps_main(FullscreenVertex input) : SV_Target {
-    float4 sum = accumulated.Load(int3(input.position.xy, 0));
-    float paths = max(float(reference.paths.x + reference.paths.y), 1.0);
+    uint stride = reference.options.w;
+    uint blockPixels = stride * stride;
+    uint passes = reference.paths.x + 1;
+    uint2 pixel = uint2(input.position.xy);
+    uint phase = pixel.x % stride + (pixel.y % stride) * stride;
+    if (phase >= passes) {
+        pixel -= pixel % stride;
+        phase = 0;
+    }
+    float4 sum = accumulated.Load(int3(pixel, 0));
+    float paths = float(((passes - 1 - phase) / blockPixels + 1) * reference.paths.y);
     return float4(sum.rgb / paths, 1.0 - sum.a / paths);
 }

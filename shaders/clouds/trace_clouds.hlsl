@@ -1,7 +1,7 @@
 // The clouds' path-traced reference over the frame (Reference (path traced); docs/clouds.md,
 // "Path-traced reference"), through the atmosphere model drawn (CLOUD_ATMOSPHERE 1: Yusov 2013,
 // 2: Bruneton and Neyret 2008; clouds/cloud_atmosphere.hlsli):
-// a thread per pixel adds reference.paths.y paths (clouds/reference_paths.hlsli) from the camera
+// a thread per pixel traced this pass adds reference.paths.y paths (clouds/reference_paths.hlsli) from the camera
 // through the pixel's centre to its accumulation: the light the paths gathered (per the sun's
 // irradiance above the atmosphere, times it) and how many reached the scene behind the clouds
 // (clouds/reference_composite.hlsl blends their mean over the frame).
@@ -44,18 +44,24 @@ float3 groundNormal(float3 x) { return normalize(x + float3(0.0, frame.planet.x,
 
 RWTexture2D<float4> accumulation : register(u0);
 
+// A thread per pixel of this pass's phase: one pixel of every options.w x options.w block, the
+// blocks' pixels taken in row order pass after pass (paths.x counts the passes before this one).
 [numthreads(8, 8, 1)]
 void main(uint3 id : SV_DispatchThreadID) {
-    if (float(id.x) >= reference.target.x || float(id.y) >= reference.target.y) return;
-    float4 position = float4(float2(id.xy) + 0.5, 0.0, 1.0);
+    uint stride = reference.options.w;
+    uint phase = reference.paths.x % (stride * stride);
+    uint2 pixel = id.xy * stride + uint2(phase % stride, phase / stride);
+    if (float(pixel.x) >= reference.target.x || float(pixel.y) >= reference.target.y) return;
+    float4 position = float4(float2(pixel) + 0.5, 0.0, 1.0);
     float3 direction = pixelDirection(position, reference.target.zw);
     float tScene = sceneDistance(sceneDepth, position, reference.target.zw);
-    uint state = hash32(id.x ^ hash32(id.y ^ hash32(reference.paths.z)));
+    uint state = hash32(pixel.x ^ hash32(pixel.y ^ hash32(reference.paths.z)));
     float4 sum = 0.0;
     for (uint k = 0; k < reference.paths.y; ++k) {
         PathSample s = tracePath(frame.cameraPosition.xyz, direction, tScene, true, reference.options.z, state);
         sum += float4(s.light * frame.sunIrradiance.rgb, s.escaped);
     }
-    if (reference.paths.x > 0) sum += accumulation[id.xy];
-    accumulation[id.xy] = sum;
+    // Its pass of an earlier round left the pixel's sums.
+    if (reference.paths.x >= stride * stride) sum += accumulation[pixel];
+    accumulation[pixel] = sum;
 }

@@ -70,14 +70,21 @@ void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const
     if (accumulation_.width != width || accumulation_.height != height) {
         accumulation_ = createColorTexture(frame.device, width, height, DXGI_FORMAT_R32G32B32A32_FLOAT,
                                            D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS);
-        paths_ = 0;
+        passes_ = 0;
     }
-    if (key != key_) paths_ = 0;
-    key_ = key;
     const unsigned added = static_cast<unsigned>(std::clamp(settings.referencePaths, 1, 64));
+    const unsigned stride = static_cast<unsigned>(std::clamp(settings.referenceStride, 1, 8));
+    if (key != key_ || added != added_ || stride != stride_) passes_ = 0;
+    key_ = key;
+    added_ = added;
+    stride_ = stride;
+    // This pass's phase: the pixel of every stride x stride block it traces, in row order.
+    const unsigned phase = passes_ % (stride * stride);
     gpu::CloudReferenceConstants c{};
-    c.paths = glm::uvec4(paths_, added, paths_ * 0x9e3779b9u + 0x632be5abu, 0u);
-    c.options = glm::uvec4(static_cast<unsigned>(settings.particleDensity), 1u, kReferenceEventLimit, 0u);
+    // The seed is the round's, so that a round at any stride draws the paths one pass at stride 1 would.
+    const unsigned round = passes_ / (stride * stride);
+    c.paths = glm::uvec4(passes_, added, round * 0x9e3779b9u + 0x632be5abu, 0u);
+    c.options = glm::uvec4(static_cast<unsigned>(settings.particleDensity), 1u, kReferenceEventLimit, stride);
     c.modes = modes;
     c.target = glm::vec4(static_cast<float>(width), static_cast<float>(height), 1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height));
     c.ground = glm::vec4(0.0f, kReferenceGroundAlbedo[0], kReferenceGroundAlbedo[1], kReferenceGroundAlbedo[2]);
@@ -91,7 +98,10 @@ void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const
         context->CSSetShaderResources(3, 1, &depth);
         context->CSSetShader(frame.shaders.computeShader(traceKey(bruneton)), nullptr, 0);
         context->CSSetUnorderedAccessViews(0, 1, accumulation_.uav.GetAddressOf(), nullptr);
-        context->Dispatch(groupCount(static_cast<unsigned>(width), 8), groupCount(static_cast<unsigned>(height), 8), 1);
+        // A thread per pixel of this phase: the blocks along each side that reach past it.
+        const unsigned across = (static_cast<unsigned>(width) - phase % stride + stride - 1) / stride;
+        const unsigned down = (static_cast<unsigned>(height) - phase / stride + stride - 1) / stride;
+        context->Dispatch(groupCount(across, 8), groupCount(down, 8), 1);
         ID3D11UnorderedAccessView* noView = nullptr;
         context->CSSetUnorderedAccessViews(0, 1, &noView, nullptr);
         ID3D11ShaderResourceView* none[13] = {};
@@ -116,7 +126,9 @@ void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const
         context->PSSetShaderResources(0, 1, &none);
         context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
     }
-    paths_ += added;
+    ++passes_;
 }
+
+unsigned CloudReference::pathsPerPixel() const { return passes_ / (stride_ * stride_) * added_; }
 
 }  // namespace firmament

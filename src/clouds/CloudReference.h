@@ -41,13 +41,17 @@ public:
     // The constants of the next pass: the tests fill them for their own kernel.
     void setConstants(ID3D11DeviceContext* context, const gpu::CloudReferenceConstants& constants);
 
-    // Adds settings.referencePaths paths per pixel to the accumulation (starting over when
-    // `key`, a digest of everything the picture depends on, changed), then blends their mean over
+    // Adds settings.referencePaths paths per pixel to the accumulation, at one pixel of every
+    // settings.referenceStride^2 block in turn (starting over when `key`, a digest of everything
+    // the picture depends on, or either setting changed), then blends their mean over
     // the frame's HDR target. The caller binds the atmosphere's constants at b2 and b4, its
     // tables at t5..t9 and its sampler at s1 (compute stage); `bruneton` picks the shader.
     void trace(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings, std::uint64_t key, bool bruneton, glm::uvec4 modes);
-    // Paths per pixel in the accumulation after the last trace().
-    unsigned pathsPerPixel() const { return paths_; }
+    // Paths in the accumulation after the last trace() at the pixels with the fewest.
+    unsigned pathsPerPixel() const;
+    // Passes since the accumulation started over, and the pixel stride they ran at.
+    unsigned passes() const { return passes_; }
+    unsigned stride() const { return stride_; }
 
     ID3D11Texture2D* cellCounts() const { return counts_.texture.Get(); }
 
@@ -61,7 +65,8 @@ private:
     StructuredBuffer slots_;  // uint: `layers` per cell
     StructuredBuffer majorants_;  // float per cell and slab of height (2 per layer; 1/m)
     Texture2D accumulation_;  // R32G32B32A32_FLOAT: the paths' light, and how many reached the scene
-    unsigned paths_ = 0;
+    unsigned passes_ = 0;  // since the accumulation started over
+    unsigned added_ = 1, stride_ = 1;
     std::uint64_t key_ = 0;
 };
 

@@ -47,6 +47,10 @@ struct CloudSettings {
     // "Reference paths per frame": paths per pixel the reference adds each frame to its
     // accumulation, which starts over when the view, the sun or the clouds change.
     int referencePaths = 1;
+    // "Reference pixel stride": each frame the reference traces one pixel of every stride x stride
+    // block, in turn, so a frame costs 1 / stride^2 of a full pass; until a pixel's turn comes it
+    // shows its block's first pixel. 1 traces every pixel every frame.
+    int referenceStride = 1;
     // "Volumetric blending": particles that intersect are merged as volumes (Yusov 2014); off,
     // plain back-to-front alpha blending, for comparison.
     bool volumetricBlending = true;
@@ -95,6 +99,7 @@ struct CloudSettings {
         v.field("enabled", enabled, "Enable clouds");
         v.choice("renderer", renderer, kCloudRendererNames, "Renderer");
         v.field("referencePaths", referencePaths, {1, 64}, "Reference paths per frame");
+        v.field("referenceStride", referenceStride, {1, 8}, "Reference pixel stride");
         v.choice("showParticles", showParticles, kParticleViewNames, "Show particles");
         v.field("shadows", shadows, "Cloud shadows");
         v.choice("shaftsFromClouds", shaftsFromClouds, kShaftsFromCloudsNames, "Shafts from clouds");

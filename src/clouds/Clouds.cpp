@@ -110,7 +110,13 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
 }
 
 std::string Clouds::blendingStatus() const {
-    if (referenceDrawn_) return "Reference (path traced): " + std::to_string(reference_.pathsPerPixel()) + " paths per pixel";
+    if (referenceDrawn_) {
+        std::string status = "Reference (path traced): " + std::to_string(reference_.pathsPerPixel()) + " paths per pixel";
+        const unsigned blockPixels = reference_.stride() * reference_.stride();
+        if (blockPixels > 1)
+            status += ", pass " + std::to_string((reference_.passes() - 1) % blockPixels + 1) + " of " + std::to_string(blockPixels) + " of the next round";
+        return status;
+    }
     std::string status(describeParticleBlending(blending_.path()));
     if (blending_.path() == ParticleBlending::PerPixelLists) {
         if (const std::optional<VolumeBlendingPass::Overflow> o = blending_.latestOverflow())

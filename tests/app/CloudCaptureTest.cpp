@@ -1,6 +1,7 @@
 // The clouds from outside, in captured EXRs (radiance before tone mapping): Show particles draws
 // the field as geometry and as transparency, finite everywhere; the transparency view brightens
-// the dark terrain under it with white cloud; and every cloud control changes the picture.
+// the dark terrain under it with white cloud; and every cloud control changes the picture. The
+// path-traced reference traced in strides draws, after a round, what a full pass draws.
 #include "clouds/VolumeBlendingPass.h"
 #include "gpu/Device.h"
 #include "support/CaptureRadiance.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cwchar>
@@ -187,6 +189,49 @@ TEST(CloudCapture, TheVisibilityPassChangesNoPixel) {
         EXPECT_TRUE(allFinite(culled)) << name;
         EXPECT_EQ(culled, all) << name;
     }
+}
+
+// The path-traced reference in strides (Reference pixel stride; docs/clouds.md, "Path-traced
+// reference"): a round of stride^2 passes draws the very paths one pass at stride 1 draws, value
+// for value; half a round has traced its pixels as the full pass does, and shows each pixel whose
+// turn has not come as its block's first pixel (equal to it wherever that pixel's one path did
+// not reach the scene behind the clouds).
+TEST(CloudCapture, TheReferenceInStridesDrawsTheFullPassAfterARound) {
+    constexpr int kSide = 2, kW = 48, kH = 27;
+    const auto traced = [](const std::string& name, int stride, int frames) {
+        const std::vector<std::wstring> settings{L"camera.position=0,8000,0", L"camera.pitch=-30", L"sun.elevation=35",
+                                                 L"clouds.renderer=Reference (path traced)", L"clouds.referenceStride=" + std::to_wstring(stride)};
+        return captureRadiance(std::filesystem::temp_directory_path() / "firmament-clouds", name, settings, kW, kH, frames);
+    };
+    const std::vector<float> full = traced("reference-stride-1", 1, 1);
+    const std::vector<float> round = traced("reference-stride-2-round", kSide, kSide * kSide);
+    const std::vector<float> half = traced("reference-stride-2-half", kSide, kSide);
+    ASSERT_FALSE(full.empty());
+    ASSERT_FALSE(round.empty());
+    ASSERT_FALSE(half.empty());
+    EXPECT_TRUE(allFinite(full));
+    EXPECT_EQ(round, full);
+    // The first two passes traced the even rows.
+    const auto pixel = [](const std::vector<float>& image, int x, int y) {
+        const size_t i = (static_cast<size_t>(y) * kW + x) * 3;
+        return std::array<float, 3>{image[i], image[i + 1], image[i + 2]};
+    };
+    int tracedDiffer = 0, waiting = 0, waitingAsFirst = 0, notFinite = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            if (y % kSide == 0) {
+                tracedDiffer += pixel(half, x, y) != pixel(full, x, y);
+                continue;
+            }
+            ++waiting;
+            const std::array<float, 3> shown = pixel(half, x, y);
+            waitingAsFirst += shown == pixel(half, x - x % kSide, y - y % kSide);
+            for (float v : shown) notFinite += !std::isfinite(v) || v < 0.0f;
+        }
+    EXPECT_EQ(tracedDiffer, 0);
+    EXPECT_EQ(notFinite, 0);
+    // From above at the default cloudiness most paths end in the clouds.
+    EXPECT_GT(waitingAsFirst, waiting / 3) << waiting;
 }
 
 // Downscale (docs/clouds.md, "Low-resolution rendering"): at 2x and 4x the clouds keep their

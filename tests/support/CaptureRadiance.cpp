@@ -9,11 +9,12 @@
 namespace firmament::test {
 
 std::vector<float> captureRadiance(const std::filesystem::path& folder, const std::string& name, const std::vector<std::wstring>& settings, int width,
-                                   int height) {
+                                   int height, int frames) {
     HeadlessCapture capture;
     capture.settings = settings;
     capture.width = width;
     capture.height = height;
+    capture.frames = frames;
     capture.png = folder / (name + ".png");
     const ProcessResult run = captureHeadless(capture);
     EXPECT_EQ(run.exitCode, 0u) << run.output;

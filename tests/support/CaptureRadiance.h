@@ -7,9 +7,10 @@
 
 namespace firmament::test {
 
-// One frame at width x height with `settings` (--set assignments) into folder/name.png and .exr.
-// The EXR's RGB, row by row; empty (with a test failure naming the output) when the run fails.
+// The last of `frames` frames at width x height with `settings` (--set assignments) into
+// folder/name.png and .exr. The EXR's RGB, row by row; empty (with a test failure naming the
+// output) when the run fails.
 std::vector<float> captureRadiance(const std::filesystem::path& folder, const std::string& name, const std::vector<std::wstring>& settings, int width,
-                                   int height);
+                                   int height, int frames = 1);
 
 }  // namespace firmament::test

@@ -18,7 +18,7 @@ namespace firmament::panels {
 void clouds(PanelContext& panel) {
     const CloudSettings& c = panel.model.state.clouds;
     editSettings(panel, "clouds", {"enabled", "renderer"});
-    if (c.renderer == CloudRenderer::PathTracedReference) editSettings(panel, "clouds", {"referencePaths"});
+    if (c.renderer == CloudRenderer::PathTracedReference) editSettings(panel, "clouds", {"referencePaths", "referenceStride"});
     const AtmosphereSettings& a = panel.model.state.atmosphere;
     if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
