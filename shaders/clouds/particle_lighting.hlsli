@@ -6,6 +6,9 @@
 // (CloudShadingConstants); kTablePi comes from clouds/optical_depth_table.hlsli.
 
 static const float kDropletAsymmetry = 0.9;  // Henyey-Greenstein g of the droplets (the table's)
+// The share of the extinction that multiply scattered light sees: the delta-M scaled medium
+// (Wiscombe 1977) of the table's orders 2 and on, 1 - g^2 (src/clouds/LightSpace.h).
+static const float kScaledExtinctionShare = 1.0 - kDropletAsymmetry * kDropletAsymmetry;
 
 // Henyey and Greenstein 1941: the phase function (1/sr) for the cosine of the scattering angle.
 float henyeyGreenstein(float cosine, float g) {

@@ -3,7 +3,9 @@
 // the tile under its centre from the sun, adding the optical depth that the ray from its centre
 // to the sun crosses in each particle nearer the sun (the ray against the ellipsoid, the chord's
 // mean density from the optical depth table), until it reaches itself, or, with the early exit,
-// until the transmittance falls below the threshold. The CPU twin is src/clouds/LightSpace.cpp.
+// until the transmittance falls below the threshold (the sun's transmittance at which the
+// multiply scattered light's is 0.01: src/clouds/LightSpace.h). The CPU twin is
+// src/clouds/LightSpace.cpp.
 #include "clouds/light_space.hlsli"
 #include "clouds/optical_depth_table.hlsli"
 #include "clouds/particle_shape.hlsli"

@@ -4,7 +4,9 @@
 //  - Opacity: 1 - e^(-tau), tau from the optical depth table along the view ray, cut at the
 //    camera and at the scene's depth.
 //  - The light at the particle: the sun's irradiance times the atmosphere's transmittance from the
-//    particle to the sun, so that clouds at sunset glow red, and the sky's irradiance there, from
+//    particle to the sun, so that clouds at sunset glow red, and through the particles nearer the
+//    sun (clouds/particle_opacity.hlsl) at their full extinction for single scattering and at the
+//    delta-M scaled one for multiple scattering; and the sky's irradiance there, from
 //    the tables of the model drawn (CLOUD_ATMOSPHERE 1: Yusov 2013's net density and ambient sky
 //    light tables; 2: Bruneton and Neyret 2008's transmittance and irradiance tables).
 //  - The particle's radiance: from the scattering table of the reference sphere, looked up with
@@ -61,7 +63,11 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float3 sun = frame.directionToSun.xyz;
     float3 sunLight, skyLight;
     lightAtPoint(p.centre.xyz, sunLight, skyLight);
-    sunLight *= particleSunTransmittance[input.slot];
+    // Two transmittances through the particles nearer the sun: the sun's single scattering sees
+    // their full extinction; the multiple scattering, computed in the delta-M scaled medium, the
+    // scaled one, e^(-(1 - g^2) tau) = T^(1 - g^2).
+    float sunTransmittance = particleSunTransmittance[input.slot];
+    float scaledTransmittance = pow(sunTransmittance, kScaledExtinctionShare);
 
     // The sun in the particle's unit-sphere space.
     float3 l = normalize(float3(dot(sun, hit.tangent) / hit.scale.x, dot(sun, hit.normal) / hit.scale.y, dot(sun, hit.bitangent) / hit.scale.z));
@@ -69,7 +75,8 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float phase = henyeyGreenstein(dot(direction, sun), kDropletAsymmetry);
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);
-    float3 radiance = sunLight * (scattered.x * phase + scattered.y) + skyLight * ((0.6 + 0.4 * height) / kTablePi);
+    float3 radiance = sunLight * (sunTransmittance * scattered.x * phase + scaledTransmittance * scattered.y) +
+                      skyLight * ((0.6 + 0.4 * height) / kTablePi);
 
     // Through the atmosphere from the camera to where the ray enters the particle.
     float3 transmittance, inscattered;

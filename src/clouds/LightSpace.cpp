@@ -23,7 +23,7 @@ gpu::CloudLightSpaceConstants lightSpaceConstants(const CloudSettings& settings,
     gpu::CloudLightSpaceConstants c{};
     c.centre = glm::vec4(static_cast<float>(camera.x), settings.altitude, static_cast<float>(camera.z), static_cast<float>(halfWidth));
     c.right = glm::vec4(glm::vec3(right), static_cast<float>(settings.lightSpaceResolution));
-    c.up = glm::vec4(glm::vec3(up), settings.opacityEarlyExit ? static_cast<float>(kOpacityEarlyExit) : 0.0f);
+    c.up = glm::vec4(glm::vec3(up), settings.opacityEarlyExit ? static_cast<float>(sunTransmittanceAtEarlyExit()) : 0.0f);
     c.sun = glm::vec4(glm::vec3(sun), static_cast<float>(nodeCapacity));
     return c;
 }
@@ -53,6 +53,8 @@ double opticalDepthThrough(const ModelParticle& q, glm::dvec3 origin, glm::dvec3
     const double mean = meanChordDensity({glm::vec3(entry), glm::vec3(through)}, steps, method);
     return mean * length * q.density * kCloudExtinction;
 }
+
+double sunTransmittanceAtEarlyExit() { return std::pow(kOpacityEarlyExit, 1.0 / kScaledExtinctionShare); }
 
 double sunTransmittance(const std::vector<ModelParticle>& particles, size_t index, glm::dvec3 toSun, double earthRadius,
                         ParticleDensityMethod method, double earlyExit) {

@@ -15,8 +15,17 @@ namespace firmament {
 
 // The medium's extinction at density 1 (1/m): shaders/clouds/particle_shape.hlsli's kCloudExtinction.
 inline constexpr double kCloudExtinction = 0.07;
-// With "Opacity early exit", a particle's walk stops once its transmittance is below this (Yusov 2014).
+// Multiply scattered light crosses the particles nearer the sun at this share of their
+// extinction: the delta-M scaled medium (Wiscombe 1977), 1 - g^2 for the droplets' asymmetry g =
+// 0.9, in which the scattering table's orders 2 and on were computed (shaders/clouds/
+// particle_lighting.hlsli's kScaledExtinctionShare).
+inline constexpr double kScaledExtinctionShare = 1.0 - 0.9 * 0.9;
+// With "Opacity early exit", a particle's walk toward the sun stops once the light it shades with
+// is below this: Yusov 2014 stops when the sun's transmittance e^(-tau) is; here the multiply
+// scattered light's, e^(-(1 - g^2) tau), which falls far more slowly.
 inline constexpr double kOpacityEarlyExit = 0.01;
+// The sun's own transmittance e^(-tau) at which that happens: kOpacityEarlyExit^(1 / (1 - g^2)).
+double sunTransmittanceAtEarlyExit();
 
 // Axes of a map seen from the sun: right and up across its rays, and the direction to it (unit).
 struct SunFrame {
@@ -37,7 +46,7 @@ double opticalDepthThrough(const ModelParticle& q, glm::dvec3 origin, glm::dvec3
 
 // Particle `index`'s sun transmittance: the particles nearer the sun (along `toSun`) in order of
 // nearness, their optical depths added until, when `earlyExit` > 0, the transmittance falls
-// below it.
+// below it (sunTransmittanceAtEarlyExit() for the shading's walk).
 double sunTransmittance(const std::vector<ModelParticle>& particles, size_t index, glm::dvec3 toSun, double earthRadius,
                         ParticleDensityMethod method, double earlyExit);
 
