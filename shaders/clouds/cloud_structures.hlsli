@@ -35,7 +35,8 @@ FIRMAMENT_CONSTANT_BUFFER(ParticleTableConstants);
 // scattering table's size and the per-pixel lists' capacity.
 struct CloudShadingConstants {
     uint4 modes;       // x: single scattering mode, y: multiple scattering mode, z: integration steps (the atmosphere's); w: unused
-    float4 scattering; // the particle scattering table's texels: x entry angles, y view azimuths, z view zeniths; w: unused
+    float4 scattering; // the particle scattering table's texels: x entry angles, y view azimuths, z view zeniths; w: optical radii (layers)
+    float4 light;      // x: the scattering table's first optical radius (each next layer doubles it); y: Multiple scattering (0 deck diffusion, 1 the particle table); zw: unused
     uint4 blending;    // x: the per-pixel lists' node capacity, y: the row of their counters (clouds/fragment_lists.hlsli); zw: unused
     float4 target;     // the clouds' target (the frame's, or its low-resolution one): width, height, 1 / width, 1 / height
 };

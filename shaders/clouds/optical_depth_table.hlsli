@@ -37,7 +37,9 @@ float4 opticalDepthCoordinates(float3 s, float3 d) {
     float thetaS = acos(clamp(s.y, -1.0, 1.0));
     float phiS = atan2(s.z, s.x);
     float thetaD = acos(clamp(dot(d, z), 0.0, 1.0));
-    float phiD = atan2(dot(d, y), dot(d, x));
+    // Along the axis (a chord through the centre) the azimuth is any: atan2(0, 0) is undefined.
+    float dx = dot(d, x), dy = dot(d, y);
+    float phiD = abs(dx) + abs(dy) > 1e-7 ? atan2(dy, dx) : 0.0;
     return float4(thetaS / kTablePi, phiS / (2.0 * kTablePi) + 0.5, thetaD / (0.5 * kTablePi), phiD / (2.0 * kTablePi) + 0.5);
 }
 

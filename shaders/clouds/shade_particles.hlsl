@@ -4,15 +4,16 @@
 //  - Opacity: 1 - e^(-tau), tau from the optical depth table along the view ray, cut at the
 //    camera and at the scene's depth.
 //  - The light at the particle: the sun's irradiance times the atmosphere's transmittance from the
-//    particle to the sun, so that clouds at sunset glow red, and through the particles nearer the
-//    sun (clouds/particle_opacity.hlsl) at their full extinction for single scattering and at the
-//    delta-M scaled one for multiple scattering; and the sky's irradiance there, from
+//    particle to the sun, so that clouds at sunset glow red; and the sky's irradiance there, from
 //    the tables of the model drawn (CLOUD_ATMOSPHERE 1: Yusov 2013's net density and ambient sky
 //    light tables; 2: Bruneton and Neyret 2008's transmittance and irradiance tables).
-//  - The particle's radiance: from the scattering table of the reference sphere, looked up with
-//    the view ray's entry point and direction against the sun: single scattering times the
-//    Henyey-Greenstein phase function for the actual angle, plus multiple scattering; plus the
-//    ambient light scattered by a white cloud (E_sky / pi, brighter at the particle's top).
+//  - The particle's radiance: single scattering from the scattering table's sphere of the
+//    particle's optical radius, at the view ray's entry point and direction against the sun,
+//    times the Henyey-Greenstein phase function for the actual angle, lit by the direct sunlight
+//    through the particles nearer the sun (clouds/particle_opacity.hlsl) at the delta-M scaled
+//    extinction; multiple scattering by deck diffusion through the particle's column along the
+//    sun, or (Multiple scattering: Particle table) the table's; plus the ambient light scattered
+//    by a white cloud (E_sky / pi, brighter at the particle's top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
 //    the atmosphere's transmittance and in-scattering (Yusov's render modes, or Bruneton's
 //    S(x, v) - T S(x0, v)), so that the cloud
@@ -38,8 +39,8 @@ cbuffer CloudShadingBuffer : register(b3) { CloudShadingConstants shading; };
 
 Texture3D<float> opticalDepthTable : register(t2);
 Texture2D<float> sceneDepth : register(t3);  // the frame's, or its low-resolution copy (Downscale)
-Texture3D<float2> scatteringTable : register(t4);  // x single scattering (phase excluded), y multiple
-StructuredBuffer<float> particleSunTransmittance : register(t10);  // by slot: through the particles nearer the sun (clouds/particle_opacity.hlsl)
+Texture3D<float4> scatteringTable : register(t4);  // x single scattering, z the forward peak's (phases excluded), y multiple
+StructuredBuffer<float2> particleSunColumn : register(t10);  // by slot: the optical depths nearer the sun and beyond (clouds/particle_opacity.hlsl)
 SamplerState linearWrap : register(s0);
 SamplerState linearClamp : register(s1);
 
@@ -63,20 +64,41 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float3 sun = frame.directionToSun.xyz;
     float3 sunLight, skyLight;
     lightAtPoint(p.centre.xyz, sunLight, skyLight);
-    // Two transmittances through the particles nearer the sun: the sun's single scattering sees
-    // their full extinction; the multiple scattering, computed in the delta-M scaled medium, the
-    // scaled one, e^(-(1 - g^2) tau) = T^(1 - g^2).
-    float sunTransmittance = particleSunTransmittance[input.slot];
-    float scaledTransmittance = pow(sunTransmittance, kScaledExtinctionShare);
+    // The particle's column along the sun (clouds/particle_opacity.hlsl): x the optical depth
+    // nearer the sun, y beyond it; and its own, through its centre (the optical depth table).
+    float2 column = particleSunColumn[input.slot];
+    ParticleHit axis;
+    hitParticleFrom(p, p.centre.xyz - 4.0 * max(p.centre.w, p.shape.x) * sun, sun, axis);
+    float own = particleOpticalDepth(p, axis, axis.far - axis.near, opticalDepthTable, linearWrap);
+    float opticalRadius = 0.5 * own;
+    // The sunlight at the particle through the column above: e^(-tau) of it unscattered, and, in
+    // the delta-M scaled medium (Wiscombe 1977), up to e^(-(1 - g^2) tau) with the light that
+    // was scattered into the droplets' forward peak on the way, no longer quite parallel.
+    float direct = exp(-column.x);
+    float scaledDirect = exp(-kScaledExtinctionShare * column.x);
 
-    // The sun in the particle's unit-sphere space.
+    // The sun in the particle's unit-sphere space; the table's sphere of the particle's optical
+    // radius. Its light leaves the whole chord of the sphere, of opacity 1 - e^(-2 tau cos): the
+    // fragment's light is per unit opacity (the blending applies the particle's own).
     float3 l = normalize(float3(dot(sun, hit.tangent) / hit.scale.x, dot(sun, hit.normal) / hit.scale.y, dot(sun, hit.bitangent) / hit.scale.z));
-    float2 scattered = particleScattering(hit.entry, hit.through, l);
-    float phase = henyeyGreenstein(dot(direction, sun), kDropletAsymmetry);
+    float3 scattered = particleScattering(hit.entry, hit.through, l, opticalRadius);
+    float perOpacity = 1.0 / max(1.0 - exp(-2.0 * opticalRadius * saturate(dot(-hit.entry, hit.through))), 1e-4);
+    // Single scattering: the unscattered sunlight with the droplets' phase function, sharp
+    // forward peak and all; the light scattered into the forward peak (on the way in, x's share
+    // of the scaled first order, or inside the particle, z) with the scaled medium's broader one.
+    float cosine = dot(direction, sun);
+    float scaledAsymmetry = kDropletAsymmetry / (1.0 + kDropletAsymmetry);
+    float peak = henyeyGreenstein(cosine, scaledAsymmetry);
+    float single = direct * (scattered.x * henyeyGreenstein(cosine, kDropletAsymmetry) + scattered.z * peak) +
+                   (scaledDirect - direct) * (kScaledExtinctionShare * scattered.x + scattered.z) * peak;
+    // Multiple scattering: deck diffusion at the particle's face towards the camera, in the slab
+    // of its whole column (mu = 1 looks at the face away from the sun), less its single
+    // scattering (Nakajima and Tanaka 1988); or the table's, of the particle alone.
+    float multiple = shading.light.y < 0.5 ? deckMultipleScattering(column.x + opticalRadius * (1.0 + cosine), column.x + own + column.y, cosine)
+                                           : scaledDirect * scattered.y * perOpacity;
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);
-    float3 radiance = sunLight * (sunTransmittance * scattered.x * phase + scaledTransmittance * scattered.y) +
-                      skyLight * ((0.6 + 0.4 * height) / kTablePi);
+    float3 radiance = sunLight * (single * perOpacity + multiple) + skyLight * ((0.6 + 0.4 * height) / kTablePi);
 
     // Through the atmosphere from the camera to where the ray enters the particle.
     float3 transmittance, inscattered;

@@ -39,6 +39,13 @@ inline constexpr std::array<std::string_view, 3> kShaftsFromCloudsNames{"None", 
 enum class CloudRenderer { Particles, PathTracedReference };
 inline constexpr std::array<std::string_view, 2> kCloudRendererNames{"Particles", "Reference (path traced)"};
 
+// "Multiple scattering": the light scattered more than once, from deck diffusion through each
+// particle's column along the sun (delta-Eddington; docs/clouds.md, "Deck diffusion"), or from
+// the scattering table's multiple scattering of the particle alone, dimmed by the delta-M scaled
+// transmittance of the particles nearer the sun (Yusov 2014's approach), for comparison.
+enum class MultipleScattering { DeckDiffusion, ParticleTable };
+inline constexpr std::array<std::string_view, 2> kMultipleScatteringNames{"Deck diffusion", "Particle table"};
+
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with
     // either atmosphere model drawn alone).
@@ -64,8 +71,10 @@ struct CloudSettings {
     // "Light occlusion": each particle lit through the particles nearer the sun (light-space
     // tiling, Yusov 2014); off, every particle sees the sun unoccluded, as in part 1.
     bool lightOcclusion = true;
-    // "Opacity early exit": a particle's walk toward the sun stops once its transmittance is
-    // below 0.01 (Yusov 2014); off, it goes on to the particle itself.
+    MultipleScattering multipleScattering = MultipleScattering::DeckDiffusion;  // "Multiple scattering"
+    // "Opacity early exit": a particle's walk along the sun stops once the column it has found is
+    // 256 thick (kOpacityEarlyExitDepth, src/clouds/LightSpace.h; Yusov 2014 stops once the sun's
+    // transmittance is below 0.01); off, it walks the tile's whole list.
     bool opacityEarlyExit = true;
     // "Visibility culling": only the particles whose bounding sphere reaches into the view are
     // drawn (Yusov 2014's visibility pass); off, every particle is drawn, for comparison. The
@@ -111,6 +120,7 @@ struct CloudSettings {
         int lightSpaceIndex = 0;
         while (lightSpaceIndex < 3 && (256 << lightSpaceIndex) < lightSpaceResolution) ++lightSpaceIndex;
         v.field("lightOcclusion", lightOcclusion, "Light occlusion");
+        v.choice("multipleScattering", multipleScattering, kMultipleScatteringNames, "Multiple scattering");
         v.choiceIndex("lightSpaceResolution", lightSpaceIndex, kLightSpaceResolutionNames, "Light-space map resolution");
         lightSpaceResolution = 256 << lightSpaceIndex;
         v.field("opacityEarlyExit", opacityEarlyExit, "Opacity early exit");

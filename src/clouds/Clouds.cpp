@@ -175,7 +175,7 @@ void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& setting
         drawReference(frame, settings, atmosphere);
     else if (settings.showParticles == ParticleView::Off && settings.enabled && lit)
         drawShaded(frame, tables->tables(), atmosphere, chooseParticleBlending(settings.volumetricBlending, settings.blendingPath, blendingSupport_),
-                   settings.downscale);
+                   settings);
 }
 
 const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
@@ -183,16 +183,19 @@ const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
     const std::filesystem::path path = storage_.mediaFolder / "clouds" / "particle-scattering.exr";
     const ParticleScatteringTable table = readParticleScattering(path, scatteringParameters_);
     const ParticleScatteringParameters& p = table.parameters;
-    std::vector<float> texels(table.single.size() * 2);
+    std::vector<float> texels(table.single.size() * 4, 0.0f);
     for (size_t k = 0; k < table.single.size(); ++k) {
-        texels[2 * k] = table.single[k];
-        texels[2 * k + 1] = table.multiple[k];
+        texels[4 * k] = table.single[k];
+        texels[4 * k + 1] = table.multiple[k];
+        texels[4 * k + 2] = table.peak[k];
     }
-    scattering_ = createTexture3D(device, p.entryAngles, p.viewAzimuths, p.viewZeniths, DXGI_FORMAT_R32G32_FLOAT, D3D11_BIND_SHADER_RESOURCE);
+    // One block of viewZeniths slices per optical radius.
+    scattering_ = createTexture3D(device, p.entryAngles, p.viewAzimuths, p.viewZeniths * p.opticalRadii, DXGI_FORMAT_R32G32B32A32_FLOAT,
+                                  D3D11_BIND_SHADER_RESOURCE);
     ComPtr<ID3D11DeviceContext> context;
     device->GetImmediateContext(&context);
-    context->UpdateSubresource(scattering_.texture.Get(), 0, nullptr, texels.data(), static_cast<UINT>(p.entryAngles * 8),
-                               static_cast<UINT>(p.entryAngles * p.viewAzimuths * 8));
+    context->UpdateSubresource(scattering_.texture.Get(), 0, nullptr, texels.data(), static_cast<UINT>(p.entryAngles * 16),
+                               static_cast<UINT>(p.entryAngles * p.viewAzimuths * 16));
     log::info("clouds: particle scattering table read from " + path.string());
     return scattering_;
 }
@@ -200,7 +203,9 @@ const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the
 // scene's depth. At 1x straight over the frame; at 2x and 4x into the low-resolution target, cut
 // by its depth, then upsampled over the frame.
-void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending, int downscale) {
+void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending,
+                        const CloudSettings& settings) {
+    const int downscale = settings.downscale;
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
     const bool bruneton = !(atmosphere.yusov && atmosphere.yusov->ready);
@@ -209,7 +214,8 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         c.modes = glm::uvec4(static_cast<unsigned>(atmosphere.yusov->singleMode), static_cast<unsigned>(atmosphere.yusov->multipleMode),
                              static_cast<unsigned>(atmosphere.yusov->integrationSteps), 0u);
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
-                             static_cast<float>(scatteringParameters_.viewZeniths), 0.0f);
+                             static_cast<float>(scatteringParameters_.viewZeniths), static_cast<float>(scatteringParameters_.opticalRadii));
+    c.light = glm::vec4(static_cast<float>(scatteringParameters_.firstOpticalRadius), static_cast<float>(settings.multipleScattering), 0.0f, 0.0f);
     ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
     ID3D11RenderTargetView* target = hdr;
     ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
@@ -245,8 +251,8 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         context->PSSetShaderResources(2, 3, extra);
         const std::array<ID3D11ShaderResourceView*, 5> air = atmosphereViews(y, b, bruneton);
         context->PSSetShaderResources(5, 5, air.data());
-        ID3D11ShaderResourceView* sunTransmittance = opacity_.sunTransmittance();
-        context->PSSetShaderResources(10, 1, &sunTransmittance);
+        ID3D11ShaderResourceView* sunColumn = opacity_.sunColumn();
+        context->PSSetShaderResources(10, 1, &sunColumn);
         ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
         context->PSSetSamplers(0, 2, samplers);
         particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), ParticleSet::InView, width, height);

@@ -75,7 +75,7 @@ public:
 private:
     void updateTables(FrameContext& frame, const CloudSettings& settings, bool finishNow);
     void drawOpticalDepth(FrameContext& frame, const ParticleTables& tables);
-    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending, int downscale);
+    void drawShaded(FrameContext& frame, const ParticleTables& tables, AtmosphereTables atmosphere, ParticleBlending blending, const CloudSettings& settings);
     // Renderer: Reference (path traced): the paths added and their mean over the frame.
     void drawReference(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere);
     const Texture3D& scatteringTable(ID3D11Device* device);
@@ -88,7 +88,7 @@ private:
     ComPtr<ID3D11RasterizerState> noCulling_;
     ConstantBuffer<gpu::CloudShadingConstants> shadingConstants_;
     ParticleScatteringParameters scatteringParameters_;
-    Texture3D scattering_;  // R32G32_FLOAT: single scattering (phase excluded), multiple
+    Texture3D scattering_;  // R32G32B32A32_FLOAT: single scattering (phase excluded), multiple, the forward peak's (phase excluded)
     BlendingSupport blendingSupport_;
     VolumeBlendingPass blending_;
     CloudLowResolution lowResolution_;

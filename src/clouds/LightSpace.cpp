@@ -23,7 +23,7 @@ gpu::CloudLightSpaceConstants lightSpaceConstants(const CloudSettings& settings,
     gpu::CloudLightSpaceConstants c{};
     c.centre = glm::vec4(static_cast<float>(camera.x), settings.altitude, static_cast<float>(camera.z), static_cast<float>(halfWidth));
     c.right = glm::vec4(glm::vec3(right), static_cast<float>(settings.lightSpaceResolution));
-    c.up = glm::vec4(glm::vec3(up), settings.opacityEarlyExit ? static_cast<float>(sunTransmittanceAtEarlyExit()) : 0.0f);
+    c.up = glm::vec4(glm::vec3(up), settings.opacityEarlyExit ? static_cast<float>(kOpacityEarlyExitDepth) : 0.0f);
     c.sun = glm::vec4(glm::vec3(sun), static_cast<float>(nodeCapacity));
     return c;
 }
@@ -54,24 +54,27 @@ double opticalDepthThrough(const ModelParticle& q, glm::dvec3 origin, glm::dvec3
     return mean * length * q.density * kCloudExtinction;
 }
 
-double sunTransmittanceAtEarlyExit() { return std::pow(kOpacityEarlyExit, 1.0 / kScaledExtinctionShare); }
-
-double sunTransmittance(const std::vector<ModelParticle>& particles, size_t index, glm::dvec3 toSun, double earthRadius,
-                        ParticleDensityMethod method, double earlyExit) {
+SunColumn sunColumn(const std::vector<ModelParticle>& particles, size_t index, glm::dvec3 toSun, double earthRadius, ParticleDensityMethod method,
+                    double earlyExitDepth) {
     const glm::dvec3 origin(particles[index].centre);
     const double own = glm::dot(origin, toSun);
-    std::vector<std::pair<double, size_t>> nearer;
+    // Every other particle by its distance towards the sun, nearest the sun first (the tile
+    // lists' order); those as far as the particle itself are skipped, as the GPU skips them.
+    std::vector<std::pair<double, size_t>> order;
     for (size_t k = 0; k < particles.size(); ++k) {
         const double toward = glm::dot(glm::dvec3(particles[k].centre), toSun);
-        if (k != index && toward > own) nearer.emplace_back(toward, k);
+        if (k != index && toward != own) order.emplace_back(toward, k);
     }
-    std::sort(nearer.begin(), nearer.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-    double opticalDepth = 0.0;
-    for (const auto& [toward, k] : nearer) {
-        opticalDepth += opticalDepthThrough(particles[k], origin, toSun, earthRadius, method);
-        if (earlyExit > 0.0 && std::exp(-opticalDepth) < earlyExit) break;
+    std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    SunColumn column;
+    for (const auto& [toward, k] : order) {
+        if (toward > own)
+            column.above += opticalDepthThrough(particles[k], origin, toSun, earthRadius, method);
+        else
+            column.beyond += opticalDepthThrough(particles[k], origin, -toSun, earthRadius, method);
+        if (earlyExitDepth > 0.0 && column.above + column.beyond > earlyExitDepth) break;
     }
-    return std::exp(-opticalDepth);
+    return column;
 }
 
 }  // namespace firmament

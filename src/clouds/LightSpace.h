@@ -1,8 +1,8 @@
 #pragma once
 // The particles' light occlusion on the CPU (Yusov 2014, "Computing light occlusion";
-// docs/clouds.md, "Light occlusion"): the light-space grid's constants, and each particle's sun
-// transmittance by a walk over every particle nearer the sun, the twin of
-// shaders/clouds/particle_opacity.hlsl (which walks only its tile's list).
+// docs/clouds.md, "Light occlusion"): the light-space grid's constants, and each particle's column
+// along the sun (the optical depth nearer the sun and beyond it) by a walk over every particle,
+// the twin of shaders/clouds/particle_opacity.hlsl (which walks only its tile's list).
 #include "clouds/CloudField.h"
 #include "clouds/CloudSettings.h"
 #include "clouds/CloudStructures.h"
@@ -15,17 +15,16 @@ namespace firmament {
 
 // The medium's extinction at density 1 (1/m): shaders/clouds/particle_shape.hlsli's kCloudExtinction.
 inline constexpr double kCloudExtinction = 0.07;
-// Multiply scattered light crosses the particles nearer the sun at this share of their
-// extinction: the delta-M scaled medium (Wiscombe 1977), 1 - g^2 for the droplets' asymmetry g =
-// 0.9, in which the scattering table's orders 2 and on were computed (shaders/clouds/
-// particle_lighting.hlsli's kScaledExtinctionShare).
+// The share of the extinction that light scattered into the droplets' forward peak still sees:
+// the delta-M scaled medium (Wiscombe 1977), 1 - g^2 for the droplets' asymmetry g = 0.9 (shaders/
+// clouds/particle_lighting.hlsli's kScaledExtinctionShare): the direct sunlight at a particle is
+// e^(-(1 - g^2) tau) of the optical depth tau nearer the sun.
 inline constexpr double kScaledExtinctionShare = 1.0 - 0.9 * 0.9;
-// With "Opacity early exit", a particle's walk toward the sun stops once the light it shades with
-// is below this: Yusov 2014 stops when the sun's transmittance e^(-tau) is; here the multiply
-// scattered light's, e^(-(1 - g^2) tau), which falls far more slowly.
-inline constexpr double kOpacityEarlyExit = 0.01;
-// The sun's own transmittance e^(-tau) at which that happens: kOpacityEarlyExit^(1 / (1 - g^2)).
-double sunTransmittanceAtEarlyExit();
+// With "Opacity early exit", a particle's walk along the sun stops once the column it has found
+// (nearer the sun and beyond) is this thick: deck diffusion's light at a particle then changes by
+// at most 6% however much thicker the column is (docs/clouds.md, "Light occlusion"), and the
+// direct sunlight e^(-(1 - g^2) tau) is below 1e-21.
+inline constexpr double kOpacityEarlyExitDepth = 256.0;
 
 // Axes of a map seen from the sun: right and up across its rays, and the direction to it (unit).
 struct SunFrame {
@@ -44,10 +43,15 @@ gpu::CloudLightSpaceConstants lightSpaceConstants(const CloudSettings& settings,
 double opticalDepthThrough(const ModelParticle& q, glm::dvec3 origin, glm::dvec3 toSun, double earthRadius, ParticleDensityMethod method,
                            int steps = 48);
 
-// Particle `index`'s sun transmittance: the particles nearer the sun (along `toSun`) in order of
-// nearness, their optical depths added until, when `earlyExit` > 0, the transmittance falls
-// below it (sunTransmittanceAtEarlyExit() for the shading's walk).
-double sunTransmittance(const std::vector<ModelParticle>& particles, size_t index, glm::dvec3 toSun, double earthRadius,
-                        ParticleDensityMethod method, double earlyExit);
+// Particle `index`'s column along the sun: the optical depths that the ray from its centre
+// towards the sun crosses in the particles nearer the sun (`above`) and that the ray away from
+// the sun crosses in those farther (`beyond`), walked from the sun's side in order, until, when
+// `earlyExitDepth` > 0, their sum passes it.
+struct SunColumn {
+    double above = 0.0;
+    double beyond = 0.0;
+};
+SunColumn sunColumn(const std::vector<ModelParticle>& particles, size_t index, glm::dvec3 toSun, double earthRadius, ParticleDensityMethod method,
+                    double earlyExitDepth);
 
 }  // namespace firmament

@@ -33,7 +33,7 @@ void ParticleOpacity::resize(ID3D11Device* device, unsigned particleCapacity, in
     }
     if (particleCapacity != particleCapacity_) {
         particleCapacity_ = particleCapacity;
-        transmittance_ = createStructuredBuffer(device, std::max(particleCapacity, 1u), 4, nullptr, "cloud particles' sun transmittance");
+        column_ = createStructuredBuffer(device, std::max(particleCapacity, 1u), 8, nullptr, "cloud particles' columns along the sun");
     }
     // A particle covers about (its footprint / the tile)^2 tiles: 4x as many per doubling.
     const size_t perParticle = size_t{kNodesPerParticle} * static_cast<size_t>(resolution / 512 > 1 ? (resolution / 512) * (resolution / 512) : 1);
@@ -83,7 +83,7 @@ void ParticleOpacity::compute(FrameContext& frame, CloudParticles& particles, co
         bindCompute(context, frame.shaders.computeShader(kOpacityShader),
                     {particles.sortedKeysView(), particles.particlesView(), tables.opticalDepth.srv.Get(), particles.argumentsView(), tiles_.heads().srv.Get(),
                      tiles_.nodes().srv.Get()},
-                    {transmittance_.uav.Get()});
+                    {column_.uav.Get()});
         context->CSSetSamplers(0, 1, linearWrap_.GetAddressOf());
         context->DispatchIndirect(particles.particleArguments(), 0);
         unbindCompute(context, 6, 1);
@@ -93,8 +93,8 @@ void ParticleOpacity::compute(FrameContext& frame, CloudParticles& particles, co
 void ParticleOpacity::clear(ID3D11Device* device, ID3D11DeviceContext* context, unsigned particleCapacity) {
     resize(device, particleCapacity, resolution_ > 0 ? resolution_ : 256);
     computed_ = false;
-    const UINT one[4] = {0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u};  // 1.0f
-    context->ClearUnorderedAccessViewUint(transmittance_.uav.Get(), one);
+    const UINT zero[4] = {0u, 0u, 0u, 0u};
+    context->ClearUnorderedAccessViewUint(column_.uav.Get(), zero);
 }
 
 ParticleOpacity::Counts ParticleOpacity::readCounts(ID3D11Device* device, ID3D11DeviceContext* context) const {

@@ -1,13 +1,15 @@
 #pragma once
-// Each cloud particle's sun transmittance through the particles nearer the sun (Yusov 2014,
-// "Computing light occlusion"; docs/clouds.md, "Light occlusion"), on the GPU each frame:
+// Each cloud particle's column along the sun: the optical depth of the particles nearer the sun,
+// and of those beyond it (Yusov 2014, "Computing light occlusion", which finds the first; deck
+// diffusion needs both; docs/clouds.md, "Light occlusion"), on the GPU each frame:
 //  1. tiling: the particles rasterized from the sun into the light-space grid
 //     (clouds/tile_particles.hlsl), each appended to the list of every tile its footprint covers;
 //  2. the lists ordered from the sun, each in place (clouds/order_tiles.hlsl);
 //  3. opacity: a thread per particle (DispatchIndirect) walks the list of its tile from the sun,
-//     to itself or, with the early exit, until its transmittance is below 0.01
-//     (clouds/particle_opacity.hlsl).
-// The shading multiplies the sun's light by the result. The CPU twin is src/clouds/LightSpace.
+//     past itself to the end or, with the early exit, until the column is kOpacityEarlyExitDepth
+//     thick (clouds/particle_opacity.hlsl).
+// The shading lights the particle by the direct sun through the column above and by deck
+// diffusion through the whole column. The CPU twin is src/clouds/LightSpace.
 #include "clouds/CloudSettings.h"
 #include "clouds/CloudStructures.h"
 #include "gpu/Buffers.h"
@@ -34,13 +36,13 @@ public:
     static constexpr unsigned kNodesPerParticle = 16;
     static constexpr size_t kMaxPoolBytes = size_t{512} << 20;
 
-    // This frame's particles (`particles` updated) tiled from the sun and their transmittance found.
+    // This frame's particles (`particles` updated) tiled from the sun and their columns found.
     void compute(FrameContext& frame, CloudParticles& particles, const ParticleTables& tables, const CloudSettings& settings);
-    // Light occlusion off: every particle's transmittance 1.
+    // Light occlusion off: every particle's column empty (the sun unoccluded, no deck around it).
     void clear(ID3D11Device* device, ID3D11DeviceContext* context, unsigned particleCapacity);
-    // The particles' sun transmittance, by slot (StructuredBuffer<float>).
-    ID3D11ShaderResourceView* sunTransmittance() const { return transmittance_.srv.Get(); }
-    ID3D11Buffer* sunTransmittanceBuffer() const { return transmittance_.buffer.Get(); }
+    // The particles' columns, by slot (StructuredBuffer<float2>: the optical depths above and beyond).
+    ID3D11ShaderResourceView* sunColumn() const { return column_.srv.Get(); }
+    ID3D11Buffer* sunColumnBuffer() const { return column_.buffer.Get(); }
     const gpu::CloudLightSpaceConstants& constants() const { return constants_; }
     unsigned nodeCapacity() const { return tiles_.capacity(); }
     // Whether the last frame computed the transmittance (not cleared it).
@@ -68,7 +70,7 @@ private:
     unsigned particleCapacity_ = 0;
     GpuLinkedLists tiles_;    // uint3 nodes: the particle's slot, the next node, asuint(distance toward the sun)
     Texture2D rasterTarget_;  // R8_UNORM, never written: the map's size for the tiling's draw
-    StructuredBuffer transmittance_;  // float per slot
+    StructuredBuffer column_;  // float2 per slot
 };
 
 }  // namespace firmament

@@ -110,14 +110,23 @@ double transport(double tau, glm::dvec3 end, glm::dvec3 w, int steps, Source&& s
 }
 }  // namespace
 
+double ParticleScatteringParameters::opticalRadius(int layer) const { return std::ldexp(firstOpticalRadius, layer); }
+
+ParticleScatteringParameters ParticleScatteringParameters::sphere(double tau) {
+    ParticleScatteringParameters p;
+    p.firstOpticalRadius = tau;
+    p.opticalRadii = 1;
+    return p;
+}
+
 std::string ParticleScatteringParameters::describe() const {
-    char text[400];
+    char text[480];
     std::snprintf(text, sizeof(text),
-                  "reference particle radius %.6g m, extinction %.6g /m, Henyey-Greenstein g %.6g, orders 1..%d; surface %d x %d x %d "
-                  "(entry angle, view azimuth, view zenith); field %d x %d x %d x %d (radius, point angle, direction zenith, direction "
-                  "azimuth); %d steps",
-                  radius, extinction, asymmetry, orders, entryAngles, viewAzimuths, viewZeniths, radii, pointAngles, directionZeniths,
-                  directionAzimuths, steps);
+                  "spheres of optical radius %.6g x 2^k, k < %d; Henyey-Greenstein g %.6g; orders 1.. until one adds < %.3g, at most %d; "
+                  "surface %d x %d x %d (entry angle, view azimuth, view zenith); field %d x %d x %d x %d (radius, point angle, direction "
+                  "zenith, direction azimuth); %d steps",
+                  firstOpticalRadius, opticalRadii, asymmetry, convergence, orders, entryAngles, viewAzimuths, viewZeniths, radii,
+                  pointAngles, directionZeniths, directionAzimuths, steps);
     return text;
 }
 
@@ -143,49 +152,21 @@ SurfaceRay scatteringTexelRay(const ParticleScatteringParameters& p, int entry, 
     return scatteringRay((entry + 0.5) / p.entryAngles, (azimuth + 0.5) / p.viewAzimuths, (zenith + 0.5) / p.viewZeniths);
 }
 
-double singleScatteringQuadrature(const ParticleScatteringParameters& p, const SurfaceRay& ray, int steps) {
+double singleScatteringQuadrature(double tau, const SurfaceRay& ray, int steps) {
     // The light leaving at the entry point travels along -direction: it comes from the points
     // along +direction.
-    const double tau = p.opticalRadius();
     return transport(tau, ray.entry, -ray.direction, steps, [&](glm::dvec3 q, glm::dvec3) { return sunTransmittance(tau, q); });
 }
 
-ParticleScatteringTable computeParticleScattering(const ParticleScatteringParameters& p, const std::function<void(double)>& progress) {
-    ParticleScatteringTable table;
-    table.parameters = p;
-    const size_t texels = static_cast<size_t>(p.entryAngles) * p.viewAzimuths * p.viewZeniths;
-    table.single.assign(texels, 0.0f);
-    table.multiple.assign(texels, 0.0f);
-    std::vector<SurfaceRay> rays(texels);
-    for (int z = 0; z < p.viewZeniths; ++z)
-        for (int a = 0; a < p.viewAzimuths; ++a)
-            for (int e = 0; e < p.entryAngles; ++e) {
-                rays[table.index(e, a, z)] = scatteringTexelRay(p, e, a, z);
-                table.single[table.index(e, a, z)] = static_cast<float>(singleScatteringQuadrature(p, rays[table.index(e, a, z)], kSingleStepsPerStep * p.steps));
-            }
-    if (progress) progress(1.0 / p.orders);
-    if (p.orders < 2) return table;
-
-    // Multiple scattering in the delta-M scaled medium (Wiscombe 1977): the phase function's
-    // forward peak, narrower than the field's directions can hold, counts as unscattered light;
-    // the medium keeps the rest. With f = g^2: extinction (1 - f) beta, asymmetry (g - f) / (1 - f).
-    const double f = p.asymmetry * p.asymmetry;
-    const double tau = p.opticalRadius() * (1.0 - f), g = (p.asymmetry - f) / (1.0 - f);
-    // Order 1 inside: the sun's light scattered once, J_1 = T_sun p(-sun . w).
-    Field radiance(p), source(p);
-    const auto firstSource = [&](glm::dvec3 q, glm::dvec3 w) { return sunTransmittance(tau, q) * henyeyGreenstein(glm::dot(-kSun, w), g); };
-    for (int r = 0; r < radiance.radii(); ++r)
-        for (int pa = 0; pa < radiance.points(); ++pa)
-            for (int z = 0; z < radiance.zeniths(); ++z)
-                for (int a = 0; a < radiance.azimuths(); ++a)
-                    radiance.at(r, pa, z, a) = transport(tau, radiance.point(r, pa), radiance.direction(z, a), p.steps, firstSource);
-
-    // The gather over the full sphere of directions: the stored azimuths and their mirror images,
-    // each with its solid angle sin(zenith) dzenith dazimuth. The phase function sampled on these
-    // directions is made exactly conservative by symmetric Sinkhorn scaling: W_ij = s_i s_j p_ij w_j
-    // with every row summing to 1, so that J is a weighted mean of L (no absorption) and, p_ij being
-    // symmetric, the gather neither makes nor loses energy (sum_i w_i W_ij = w_j).
-    const int nz = radiance.zeniths(), na = radiance.azimuths(), count = nz * 2 * na;
+namespace {
+// The gather's weights over the full sphere of directions: the stored azimuths and their mirror
+// images, each with its solid angle sin(zenith) dzenith dazimuth. The phase function sampled on
+// these directions is made exactly conservative by symmetric Sinkhorn scaling: W_ij = s_i s_j
+// p_ij w_j with every row summing to 1, so that J is a weighted mean of L (no absorption) and,
+// p_ij being symmetric, the gather neither makes nor loses energy (sum_i w_i W_ij = w_j). Rows
+// of the stored directions (zenith z, azimuth a < na is full-sphere index z * 2na + a).
+std::vector<double> gatherWeights(int nz, int na, double g) {
+    const int count = nz * 2 * na;
     std::vector<glm::dvec3> directions(count);
     std::vector<double> solidAngle(count);
     for (int gz = 0; gz < nz; ++gz)
@@ -203,7 +184,6 @@ ParticleScatteringTable computeParticleScattering(const ParticleScatteringParame
             for (int j = 0; j < count; ++j) row += phase[static_cast<size_t>(i) * count + j] * scale[j] * solidAngle[j];
             scale[i] = std::sqrt(scale[i] / row);
         }
-    // Rows of the stored directions (zenith z, azimuth a < na is full-sphere index z * 2na + a).
     std::vector<double> weights(static_cast<size_t>(nz) * na * count);
     for (int z = 0; z < nz; ++z)
         for (int a = 0; a < na; ++a) {
@@ -211,8 +191,46 @@ ParticleScatteringTable computeParticleScattering(const ParticleScatteringParame
             double* row = &weights[(static_cast<size_t>(z) * na + a) * count];
             for (int j = 0; j < count; ++j) row[j] = scale[i] * scale[j] * phase[static_cast<size_t>(i) * count + j] * solidAngle[j];
         }
+    return weights;
+}
 
-    for (int order = 2; order <= p.orders; ++order) {
+// One layer, the sphere of optical radius tauTrue: its single scattering, then its multiple
+// scattering order by order until an order adds less than the convergence share; returns the
+// last order added.
+int computeLayer(const ParticleScatteringParameters& p, double tauTrue, const std::vector<SurfaceRay>& rays, const std::vector<double>& weights,
+                 float* single, float* peak, float* multiple) {
+    // The delta-M scaled medium (Wiscombe 1977): the phase function's forward peak, narrower than
+    // the field's directions can hold, counts as unscattered light; the medium keeps the rest.
+    // With f = g^2: extinction (1 - f) beta, asymmetry (g - f) / (1 - f).
+    const double f = p.asymmetry * p.asymmetry;
+    const double tau = tauTrue * (1.0 - f), g = (p.asymmetry - f) / (1.0 - f);
+    // Single scattering in the true sphere (the renderer applies the true phase function); and
+    // what the scaled sphere's first order adds to it, the light scattered into the forward peak
+    // on its way in or out and then once more (the renderer applies the scaled phase function):
+    // the first order of the scaled sphere, whose scattering coefficient is (1 - f) beta, less
+    // the true single scattering's share of it.
+    const size_t texels = rays.size();
+    for (size_t k = 0; k < texels; ++k) {
+        const double once = singleScatteringQuadrature(tauTrue, rays[k], kSingleStepsPerStep * p.steps);
+        const double scaled = singleScatteringQuadrature(tau, rays[k], kSingleStepsPerStep * p.steps);
+        single[k] = static_cast<float>(once);
+        peak[k] = static_cast<float>(std::max(scaled - (1.0 - f) * once, 0.0));
+    }
+    if (p.orders < 2) return 1;
+
+    // Order 1 inside: the sun's light scattered once, J_1 = T_sun p(-sun . w).
+    Field radiance(p), source(p);
+    const auto firstSource = [&](glm::dvec3 q, glm::dvec3 w) { return sunTransmittance(tau, q) * henyeyGreenstein(glm::dot(-kSun, w), g); };
+    for (int r = 0; r < radiance.radii(); ++r)
+        for (int pa = 0; pa < radiance.points(); ++pa)
+            for (int z = 0; z < radiance.zeniths(); ++z)
+                for (int a = 0; a < radiance.azimuths(); ++a)
+                    radiance.at(r, pa, z, a) = transport(tau, radiance.point(r, pa), radiance.direction(z, a), p.steps, firstSource);
+
+    const int nz = radiance.zeniths(), na = radiance.azimuths();
+    double total = 0.0;
+    int order = 2;
+    for (;; ++order) {
         // J_n from L_{n-1}, at every point of the field.
         for (int r = 0; r < radiance.radii(); ++r)
             for (int pa = 0; pa < radiance.points(); ++pa)
@@ -226,22 +244,50 @@ ParticleScatteringTable computeParticleScattering(const ParticleScatteringParame
                     }
         const auto orderSource = [&](glm::dvec3 q, glm::dvec3 w) { return source.sample(q, w); };
         // The radiance this order adds leaving the surface...
-        for (size_t k = 0; k < texels; ++k)
-            table.multiple[k] += static_cast<float>(transport(tau, rays[k].entry, -rays[k].direction, p.steps, orderSource));
+        double added = 0.0;
+        for (size_t k = 0; k < texels; ++k) {
+            const double light = transport(tau, rays[k].entry, -rays[k].direction, p.steps, orderSource);
+            multiple[k] += static_cast<float>(light);
+            added += light;
+        }
+        total += added;
+        if (order >= p.orders || !(added > p.convergence * total)) break;
         // ...and inside, for the next order.
-        if (order < p.orders)
-            for (int r = 0; r < radiance.radii(); ++r)
-                for (int pa = 0; pa < radiance.points(); ++pa)
-                    for (int z = 0; z < nz; ++z)
-                        for (int a = 0; a < na; ++a)
-                            radiance.at(r, pa, z, a) = transport(tau, radiance.point(r, pa), radiance.direction(z, a), p.steps, orderSource);
-        if (progress) progress(static_cast<double>(order) / p.orders);
+        for (int r = 0; r < radiance.radii(); ++r)
+            for (int pa = 0; pa < radiance.points(); ++pa)
+                for (int z = 0; z < nz; ++z)
+                    for (int a = 0; a < na; ++a)
+                        radiance.at(r, pa, z, a) = transport(tau, radiance.point(r, pa), radiance.direction(z, a), p.steps, orderSource);
+    }
+    return order;
+}
+}  // namespace
+
+ParticleScatteringTable computeParticleScattering(const ParticleScatteringParameters& p, const std::function<void(double)>& progress, int onlyLayer) {
+    ParticleScatteringTable table;
+    table.parameters = p;
+    const size_t texels = static_cast<size_t>(p.entryAngles) * p.viewAzimuths * p.viewZeniths;
+    table.single.assign(texels * p.opticalRadii, 0.0f);
+    table.peak.assign(texels * p.opticalRadii, 0.0f);
+    table.multiple.assign(texels * p.opticalRadii, 0.0f);
+    table.orders.assign(p.opticalRadii, 0);
+    std::vector<SurfaceRay> rays(texels);
+    for (int z = 0; z < p.viewZeniths; ++z)
+        for (int a = 0; a < p.viewAzimuths; ++a)
+            for (int e = 0; e < p.entryAngles; ++e) rays[table.index(e, a, z)] = scatteringTexelRay(p, e, a, z);
+    const double f = p.asymmetry * p.asymmetry;
+    const std::vector<double> weights = gatherWeights(p.directionZeniths, p.directionAzimuths, (p.asymmetry - f) / (1.0 - f));
+    for (int layer = 0; layer < p.opticalRadii; ++layer) {
+        if (onlyLayer >= 0 && layer != onlyLayer) continue;
+        const size_t first = table.index(0, 0, 0, layer);
+        table.orders[layer] = computeLayer(p, p.opticalRadius(layer), rays, weights, &table.single[first], &table.peak[first], &table.multiple[first]);
+        if (progress) progress(static_cast<double>(layer + 1) / p.opticalRadii);
     }
     return table;
 }
 
 namespace {
-constexpr int kFileFormat = 1;  // raise when the file's layout changes
+constexpr int kFileFormat = 3;  // raise when the file's layout changes
 }  // namespace
 
 std::string particleScatteringKey(const ParticleScatteringParameters& p) {
@@ -250,26 +296,36 @@ std::string particleScatteringKey(const ParticleScatteringParameters& p) {
 
 void writeParticleScattering(const std::filesystem::path& path, const ParticleScatteringTable& table) {
     const ParticleScatteringParameters& p = table.parameters;
-    FloatRgbaImage image{p.entryAngles * p.viewZeniths, p.viewAzimuths, {}};
+    FloatRgbaImage image{p.entryAngles * p.viewZeniths, p.viewAzimuths * p.opticalRadii, {}};
     image.rgba.assign(static_cast<size_t>(image.width) * image.height * 4, 0.0f);
-    for (int z = 0; z < p.viewZeniths; ++z)
-        for (int a = 0; a < p.viewAzimuths; ++a)
-            for (int e = 0; e < p.entryAngles; ++e) {
-                const size_t pixel = (static_cast<size_t>(a) * image.width + z * p.entryAngles + e) * 4;
-                image.rgba[pixel] = table.single[table.index(e, a, z)];
-                image.rgba[pixel + 1] = table.multiple[table.index(e, a, z)];
-            }
+    for (int layer = 0; layer < p.opticalRadii; ++layer)
+        for (int z = 0; z < p.viewZeniths; ++z)
+            for (int a = 0; a < p.viewAzimuths; ++a)
+                for (int e = 0; e < p.entryAngles; ++e) {
+                    const size_t pixel = ((static_cast<size_t>(layer) * p.viewAzimuths + a) * image.width + z * p.entryAngles + e) * 4;
+                    image.rgba[pixel] = table.single[table.index(e, a, z, layer)];
+                    image.rgba[pixel + 1] = table.multiple[table.index(e, a, z, layer)];
+                    image.rgba[pixel + 2] = table.peak[table.index(e, a, z, layer)];
+                }
+    std::string orders;
+    for (int layer = 0; layer < p.opticalRadii; ++layer) orders += (layer ? ", " : "") + std::to_string(table.orders.empty() ? 0 : table.orders[layer]);
     ExrAttributes a;
     a["firmament.lut.key"] = particleScatteringKey(p);
     a["firmament.lut.formatVersion"] = kFileFormat;
     a["firmament.lut.name"] = std::string(
-        "cloud particle scattering (Yusov 2014): radiance leaving a homogeneous sphere lit by the sun, per unit sun irradiance (1/sr). "
-        "R: single scattering without its phase function; G: multiple scattering, orders 2..N in the delta-M scaled medium");
+        "cloud particle scattering (Yusov 2014): radiance leaving homogeneous spheres of several optical radii lit by the sun, per "
+        "unit sun irradiance (1/sr). "
+        "R: single scattering without its phase function; G: multiple scattering, orders 2..N in the delta-M scaled medium; B: the scaled "
+        "medium's first order beyond the share of it that R is (the light scattered into the forward peak and once more), without its "
+        "phase function");
     a["firmament.lut.dimensions"] = p.describe();
     a["firmament.lut.parameterization"] = std::string(
         "sun along +z; entry point s at angle theta_s from it: u0 = theta_s / pi; view direction d into the sphere, in the frame Z = -s, "
         "X = the sun's direction across Z, Y = Z x X: u1 = atan2(d.Y, d.X) / 2pi + 1/2, u2 = acos(d.Z) / (pi/2). Texel centres.");
-    a["firmament.lut.layout"] = std::string("x: entry angle within a tile, one tile per view zenith side by side; y: view azimuth");
+    a["firmament.lut.layout"] = std::string(
+        "x: entry angle within a tile, one tile per view zenith side by side; y: view azimuth within a row of tiles, one row per optical "
+        "radius (the first at the top)");
+    a["firmament.lut.orders"] = "the last order added, by optical radius: " + orders;
     a["firmament.lut.generator"] = std::string("firmament --generate-cloud-scattering <file> (tools/generate-cloud-scattering)");
     writeExr(path, image, a);
 }
@@ -279,22 +335,26 @@ ParticleScatteringTable readParticleScattering(const std::filesystem::path& path
     if (!std::filesystem::exists(path, ec)) throw Error(path.string() + ": the cloud particle's scattering table is missing (tools/generate-cloud-scattering makes it)");
     const FloatExrFile file = readFloatExr(path);
     const std::string key = particleScatteringKey(expected);
-    if (const std::string why = checkTableHeader(file.attributes, key, expected.entryAngles * expected.viewZeniths, expected.viewAzimuths,
+    if (const std::string why = checkTableHeader(file.attributes, key, expected.entryAngles * expected.viewZeniths,
+                                                 expected.viewAzimuths * expected.opticalRadii,
                                                  file.image.width, file.image.height);
         !why.empty())
         throw Error(path.string() + ": " + why + "; run tools/generate-cloud-scattering to make it for this program");
     ParticleScatteringTable table;
     table.parameters = expected;
-    const size_t texels = static_cast<size_t>(expected.entryAngles) * expected.viewAzimuths * expected.viewZeniths;
+    const size_t texels = static_cast<size_t>(expected.entryAngles) * expected.viewAzimuths * expected.viewZeniths * expected.opticalRadii;
     table.single.resize(texels);
+    table.peak.resize(texels);
     table.multiple.resize(texels);
-    for (int z = 0; z < expected.viewZeniths; ++z)
-        for (int a = 0; a < expected.viewAzimuths; ++a)
-            for (int e = 0; e < expected.entryAngles; ++e) {
-                const size_t pixel = (static_cast<size_t>(a) * file.image.width + z * expected.entryAngles + e) * 4;
-                table.single[table.index(e, a, z)] = file.image.rgba[pixel];
-                table.multiple[table.index(e, a, z)] = file.image.rgba[pixel + 1];
-            }
+    for (int layer = 0; layer < expected.opticalRadii; ++layer)
+        for (int z = 0; z < expected.viewZeniths; ++z)
+            for (int a = 0; a < expected.viewAzimuths; ++a)
+                for (int e = 0; e < expected.entryAngles; ++e) {
+                    const size_t pixel = ((static_cast<size_t>(layer) * expected.viewAzimuths + a) * file.image.width + z * expected.entryAngles + e) * 4;
+                    table.single[table.index(e, a, z, layer)] = file.image.rgba[pixel];
+                    table.multiple[table.index(e, a, z, layer)] = file.image.rgba[pixel + 1];
+                    table.peak[table.index(e, a, z, layer)] = file.image.rgba[pixel + 2];
+                }
     return table;
 }
 

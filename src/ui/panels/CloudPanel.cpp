@@ -1,8 +1,8 @@
 // The Clouds panel: the cell grid (rings, their dimension, layers, particle distance), the layer
 // (altitude, thickness), the cloudiness, the density map's resolution and the wind, and the view
 // of the particles' bounding shapes; the blending (volume-aware or alpha, the pixel-ordering path)
-// and what the running path reports, the resolution the clouds are rendered at, and the light
-// occlusion's light-space map and early exit; the clouds' shadows and how the light shafts see
+// and what the running path reports, the resolution the clouds are rendered at, the light
+// occlusion and the multiple scattering's model, the light-space map and the early exit; the clouds' shadows and how the light shafts see
 // them; the renderer (the particles, or the path-traced reference and its paths per frame). The
 // grid's size in cells and particles is shown under it.
 #include "clouds/CloudField.h"
@@ -23,8 +23,8 @@ void clouds(PanelContext& panel) {
     if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
     ImGui::SeparatorText("Rendering");
-    editSettings(panel, "clouds", {"volumetricBlending", "blendingPath", "downscale", "lightOcclusion", "lightSpaceResolution", "opacityEarlyExit",
-                                    "visibilityCulling"});
+    editSettings(panel, "clouds", {"volumetricBlending", "blendingPath", "downscale", "lightOcclusion", "multipleScattering", "lightSpaceResolution",
+                                    "opacityEarlyExit", "visibilityCulling"});
     if (c.enabled && !panel.model.cloudBlending.empty()) ImGui::TextWrapped("Running: %s", panel.model.cloudBlending.c_str());
     if (const std::optional<double> progress = panel.model.cloudTableProgress)
         ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
