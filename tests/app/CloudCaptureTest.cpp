@@ -290,6 +290,8 @@ TEST(CloudCapture, DownscaleKeepsTheCloudsAndTheTerrainsEdges) {
 
 // Light occlusion (docs/clouds.md): seen from below, the particles under others are lit through
 // them, so the clouds overhead are darker with it than without; every map resolution is finite.
+// Measured 0.916 since deck diffusion (the deck's diffuse light falls slowly with the column's
+// depth; 0.48 before it, 0.31 before the scaled transmittance); with the columns lost it is 1.
 TEST(CloudCapture, LightOcclusionDarkensTheCloudsFromBelow) {
     const std::vector<std::wstring> below{L"camera.position=0,1500,0", L"camera.pitch=25", L"clouds.cloudiness=0.8", L"sun.elevation=50"};
     const std::vector<float> unoccluded = capture("occlusion-off", plus(below, {L"clouds.lightOcclusion=off"}));
@@ -298,7 +300,7 @@ TEST(CloudCapture, LightOcclusionDarkensTheCloudsFromBelow) {
     ASSERT_EQ(occluded.size(), unoccluded.size());
     const double ratio = mean(occluded) / mean(unoccluded);
     std::printf("the clouds from below with light occlusion: %.3f of their radiance without\n", ratio);
-    EXPECT_LT(ratio, 0.9);
+    EXPECT_LT(ratio, 0.95);
     EXPECT_GT(ratio, 0.2);
     for (const wchar_t* resolution : {L"clouds.lightSpaceResolution=256", L"clouds.lightSpaceResolution=2048"}) {
         const std::vector<float> frame = capture("occlusion-map", plus(below, {resolution}));
