@@ -42,6 +42,7 @@ add_library(firmament_portable STATIC
     ${src}/clouds/CloudGrid.cpp
     ${src}/clouds/CloudMedium.cpp
     ${src}/clouds/CloudPathTracer.cpp
+    ${src}/clouds/DeckDiffusion.cpp
     ${src}/clouds/LightSpace.cpp
     ${src}/clouds/OpticalDepthTable.cpp
     ${src}/clouds/ParticleBlending.cpp
