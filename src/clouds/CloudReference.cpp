@@ -101,6 +101,7 @@ void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const
         // A thread per pixel of this phase: the blocks along each side that reach past it.
         const unsigned across = (static_cast<unsigned>(width) - phase % stride + stride - 1) / stride;
         const unsigned down = (static_cast<unsigned>(height) - phase / stride + stride - 1) / stride;
+        pathsLastPass_ = across * down * added;
         context->Dispatch(groupCount(across, 8), groupCount(down, 8), 1);
         ID3D11UnorderedAccessView* noView = nullptr;
         context->CSSetUnorderedAccessViews(0, 1, &noView, nullptr);

@@ -52,6 +52,9 @@ public:
     // Passes since the accumulation started over, and the pixel stride they ran at.
     unsigned passes() const { return passes_; }
     unsigned stride() const { return stride_; }
+    // Paths the last trace() started: its pixels times the paths per pixel per frame (the
+    // benchmark's "cloud reference paths", the time per path's divisor).
+    unsigned pathsLastPass() const { return pathsLastPass_; }
 
     ID3D11Texture2D* cellCounts() const { return counts_.texture.Get(); }
 
@@ -67,6 +70,7 @@ private:
     Texture2D accumulation_;  // R32G32B32A32_FLOAT: the paths' light, and how many reached the scene
     unsigned passes_ = 0;  // since the accumulation started over
     unsigned added_ = 1, stride_ = 1;
+    unsigned pathsLastPass_ = 0;
     std::uint64_t key_ = 0;
 };
 

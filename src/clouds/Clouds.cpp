@@ -101,6 +101,7 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
         result.emplace_back("cloud fragments over the node pool", static_cast<double>(o.nodesDropped));
         result.emplace_back("cloud fragments over a pixel's limit", static_cast<double>(o.fragmentsDropped));
     }
+    if (referenceDrawn_) result.emplace_back("cloud reference paths", static_cast<double>(reference_.pathsLastPass()));
     if (opacity_.computed()) {
         const ParticleOpacity::Counts o = opacity_.readCounts(device, context);
         result.emplace_back("cloud light-space tile nodes", static_cast<double>(o.nodes));
