@@ -107,10 +107,12 @@ add_executable(firmament_portable_tests
 target_include_directories(firmament_portable_tests PRIVATE ${tests})
 target_link_libraries(firmament_portable_tests PRIVATE firmament_portable GTest::gtest)
 firmament_warnings(firmament_portable_tests)
-# The shipped cloud scattering table and soak schedule, beside the executable as in the Windows build.
+# The shipped cloud scattering table, soak schedule and benchmark scenarios, beside the executable
+# as in the Windows build.
 add_custom_command(TARGET firmament_portable_tests POST_BUILD
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/clouds $<TARGET_FILE_DIR:firmament_portable_tests>/media/clouds
-    COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/soak $<TARGET_FILE_DIR:firmament_portable_tests>/media/soak)
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/soak $<TARGET_FILE_DIR:firmament_portable_tests>/media/soak
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/benchmarks $<TARGET_FILE_DIR:firmament_portable_tests>/media/benchmarks)
 # Two processes (GoogleTest's shards) rather than one per case, as the Windows build's unit tests,
 # with the same two slow cases in the full tier (tests/CMakeLists.txt).
 include(${CMAKE_CURRENT_LIST_DIR}/FirmamentTestGroups.cmake)

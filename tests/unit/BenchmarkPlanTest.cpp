@@ -1,10 +1,12 @@
 // The benchmark's scenario files and its statistics: views x variants x resolutions expand in
 // order with each fragment applied over the last; every malformed file is refused with a message
 // naming the field; the median is the middle sample (the mean of the two middle ones for an
-// even count); the ratios divide the numerator variant's medians by the denominator's.
+// even count); the ratios divide the numerator variant's medians by the denominator's; every
+// scenario file the program ships loads.
 #include "app/BenchmarkPlan.h"
 #include "app/BenchmarkReport.h"
 #include "core/SettingsJson.h"
+#include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
 
@@ -137,6 +139,24 @@ TEST(BenchmarkReport, RatiosDivideTheNumeratorsMediansByTheDenominators) {
     const std::string table = benchmarkTable(p, results, {{"Yusov 2013", "abc", 2.0, 0.25}});
     EXPECT_NE(table.find("lut / int, high, 320x180: frame 0.500, passes 0.500 (paper: 0.89)"), std::string::npos) << table;
     EXPECT_NE(table.find("Yusov 2013: computed in 2.00 s, loaded in 0.250 s"), std::string::npos) << table;
+}
+
+// media/benchmarks/ (copied beside the executable): a variant or view with a setting the program
+// no longer has would otherwise be found only when someone runs that benchmark.
+TEST(BenchmarkPlan, EveryShippedScenarioFileLoads) {
+    const std::filesystem::path folder = test::executableFolder() / "media" / "benchmarks";
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.path().extension() != ".json") continue;
+        ++files;
+        try {
+            const BenchmarkPlan plan = loadBenchmarkPlan(entry.path(), State{});
+            EXPECT_FALSE(plan.scenarios.empty()) << entry.path().string();
+        } catch (const SettingsError& e) {
+            ADD_FAILURE() << e.what();
+        }
+    }
+    EXPECT_GE(files, 4) << "the scenario files in " << folder.string();
 }
 
 }  // namespace
