@@ -1,9 +1,8 @@
 // firmament_score_against_reference REFERENCE.exr CANDIDATE.exr CLEAR.exr SIDE_BY_SIDE.png: a
 // frame scored against a reference frame of the same view (tools/clouds-against-reference: the
 // particles against the clouds' path-traced reference), from the captures' radiance before
-// tone mapping. CLEAR is the view without the technique; the technique's pixels are those where
-// either frame's luminance differs from CLEAR's by more than 5%. Both frames are tone-mapped
-// here, at one exposure (support/ReferenceScore.h says how). Writes the two side by side
+// tone mapping; CLEAR is the view without the technique (support/ReferenceScore.h says which
+// pixels are the technique's and how both frames are tone-mapped). Writes the two side by side
 // (candidate left) and prints one JSON object:
 //  - hdrPsnrDb: 10 log10(P^2 / MSE) over every channel of every pixel, P the reference's 99.9th
 //    percentile of channel values (a percentile, so that a few unconverged bright paths do not
