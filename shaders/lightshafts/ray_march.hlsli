@@ -9,9 +9,12 @@
 //    distance D_start to the first lit point, and eq. 8 over [D_start, D_start + D_lit]
 //    (two look-ups on one side of the horizon);
 //  - unoccluded higher orders: eq. 8 over the whole ray, shadows or not.
-// The stretch before the first marched cascade and the one beyond the last (or beyond the
-// shafts' end, 300 km) count as lit: Integration integrates them with the spaced quadrature of
-// single_scattering.hlsli, the tables take eq. 8 over each.
+// The march starts at the camera: the first marched cascade ("First cascade to ray march") is
+// fitted around the camera's place as well as its own slice of the frustum
+// (src/shadows/CascadeSplits.h), so it covers the near stretch the finer cascades would have,
+// and a caster nearer than its split still shadows the haze. The stretch beyond the last cascade
+// (or beyond the shafts' end, 300 km) counts as lit: Integration integrates it with the spaced
+// quadrature of single_scattering.hlsli, the tables take eq. 8 over it.
 //
 // With the epipolar sampling's 1D min/max trees (FIRMAMENT_MINMAX_TREES, the march of the
 // epipolar samples), the steps a tree proves uniformly lit or shadowed are taken a node at a time
@@ -77,9 +80,15 @@ float cascadeVisibility(uint c, float3 uvz) {
     return shadowMap.SampleCmpLevelZero(shadowComparison, atlasCoordinates(c, uvz.xy), uvz.z - shadows.map.z);
 }
 
-// The stretch the march covers: the cascades' view depths from the first to march to the last,
-// seen along the ray (view depth z lies at z / (v . forward)), up to the shafts' end; nothing
-// marched yet.
+// Where cascade c's part of the march begins, in view depth: its split, or the camera for the
+// first marched cascade, whose map holds the camera's place.
+float marchedCascadeStart(uint c) {
+    return c == lightShafts.mode.w ? 0.0 : cascadeSplit(c);
+}
+
+// The stretch the march covers: from the camera (or where the ray enters the atmosphere) to the
+// last cascade's view depth, seen along the ray (view depth z lies at z / (v . forward)), up to
+// the shafts' end; nothing marched yet.
 ShadowMarch marchedStretch(ViewRay ray) {
     ShadowMarch m;
     m.begin = 0.0;
@@ -92,7 +101,7 @@ ShadowMarch marchedStretch(ViewRay ray) {
     float cosForward = dot(ray.viewDir, shadows.cameraForward.xyz);
     if (count == 0 || first >= count || cosForward <= 1e-4) return m;
     float reach = min(lightShafts.march.x, cascadeSplit(count) / cosForward) - ray.offset;
-    m.begin = clamp(cascadeSplit(first) / cosForward - ray.offset, 0.0, ray.length);
+    m.begin = clamp(marchedCascadeStart(first) / cosForward - ray.offset, 0.0, ray.length);
     m.end = clamp(reach, m.begin, ray.length);
     m.firstLit = m.end;
     return m;
@@ -109,7 +118,7 @@ CascadeMarch marchCascade(ViewRay ray, float3 sunDir, bool integrate, uint slice
     cm.firstLit = -1.0;
     cm.singleScattering = 0.0;
     float cosForward = dot(ray.viewDir, shadows.cameraForward.xyz);
-    float s0 = max(cascadeSplit(c) / cosForward - ray.offset, begin);
+    float s0 = max(marchedCascadeStart(c) / cosForward - ray.offset, begin);
     float s1 = min(cascadeSplit(c + 1) / cosForward - ray.offset, end);
     if (s1 <= s0 || cosForward <= 1e-4) return cm;
     float3 uvz0 = shadowMapCoordinates(c, ray.camera + ray.viewDir * (ray.offset + s0));

@@ -57,7 +57,7 @@ struct LightShaftSettings {
     // sample scales its sun's colour instead, by 0.5 by default; the Sun intensity control does
     // that here, so the default is 1: the shafts then draw what the atmosphere draws.
     float scatteringScale = 1.0f;
-    int firstCascade = 1;        // "First cascade to ray march": the finer ones count as lit
+    int firstCascade = 1;        // "First cascade to ray march", from the camera on: its map holds the camera
     bool lightingOnly = false;   // "Lighting only": the in-scattered light alone, no scene, no sun
 
     // The cascade processing mode the march uses with `marchedCascades` cascades to march: the

@@ -127,7 +127,9 @@ void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) 
     terrain.place(glm::dvec3(state.camera.position));
     const glm::dvec3 toSun = glm::dvec3(state.sun.direction());
     const double reach = std::min((terrain.maxAltitude() - terrain.minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
-    shadows_->update(frame.context, state.camera, static_cast<double>(frame.width()) / frame.height(), toSun, state.shadows, reach);
+    // The light shafts' march starts at the camera: their first marched cascade holds it.
+    const int aroundCamera = lightShaftsDrawn(state) ? state.lightShafts.firstCascade : -1;
+    shadows_->update(frame.context, state.camera, static_cast<double>(frame.width()) / frame.height(), toSun, state.shadows, reach, aroundCamera);
     if (!shadows_->cascades().empty()) {
         auto pass = profiler_.scope("Shadow cascades");
         shadows_->render(frame.context, [&](ID3D11Buffer* caster) { terrain.renderDepth(frame.context, frame.shaders, caster); });

@@ -33,16 +33,17 @@ glm::dmat4 lightViewMatrix(glm::dvec3 directionToSun) {
 }
 
 Cascade fitCascade(const CascadeCamera& camera, double nearDepth, double farDepth, const glm::dmat4& lightView, int resolution,
-                   double casterReach) {
+                   double casterReach, bool aroundCamera) {
     Cascade c;
     c.nearDepth = nearDepth;
     c.farDepth = farDepth;
+    const double fitNear = aroundCamera ? 0.0 : nearDepth;  // the camera is the apex: the slice [0, far] is the whole pyramid
     // The smallest sphere about the view axis through the slice's corners: the corners at depth
     // z lie k z off the axis, k the tangent of the half diagonal. Equal distance to the near and
     // far corners puts the centre at (near + far)(1 + k^2) / 2, no farther than the far plane.
     const double tanHalfFovX = camera.tanHalfFovY * camera.aspectRatio;
     const double k2 = camera.tanHalfFovY * camera.tanHalfFovY + tanHalfFovX * tanHalfFovX;
-    const double centreDepth = std::min((nearDepth + farDepth) * (1.0 + k2) * 0.5, farDepth);
+    const double centreDepth = std::min((fitNear + farDepth) * (1.0 + k2) * 0.5, farDepth);
     const double farOffAxis2 = k2 * farDepth * farDepth;
     c.radius = std::sqrt(farOffAxis2 + (farDepth - centreDepth) * (farDepth - centreDepth));
     c.centre = camera.position + glm::normalize(camera.forward) * centreDepth;

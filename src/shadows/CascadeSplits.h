@@ -40,7 +40,11 @@ struct Cascade {
 
 // The cascade for view depths [nearDepth, farDepth]. casterReach: how far towards the sun
 // beyond the sphere the depth range extends, so that distant mountains still cast shadows.
+// aroundCamera: the sphere bounds the frustum from the camera's place (depth 0) to farDepth
+// instead, as the light shafts' first marched cascade must, since their march starts at the
+// camera (Yusov 2013; Intel's sample grows that cascade's box to hold the camera). The far
+// corners set the sphere's size, so it grows little: its texels 1.4% for the default split 1 to 2.
 Cascade fitCascade(const CascadeCamera& camera, double nearDepth, double farDepth, const glm::dmat4& lightView, int resolution,
-                   double casterReach);
+                   double casterReach, bool aroundCamera = false);
 
 }  // namespace firmament

@@ -55,7 +55,7 @@ void CascadedShadowMaps::createMap(int resolution, int cascades) {
 }
 
 void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& camera, double aspectRatio, glm::dvec3 directionToSun,
-                                const ShadowSettings& settings, double casterReach) {
+                                const ShadowSettings& settings, double casterReach, int cascadeAroundCamera) {
     cascades_.clear();
     constants_ = {};
     if (settings.enabled) {
@@ -71,7 +71,8 @@ void CascadedShadowMaps::update(ID3D11DeviceContext* context, const Camera& came
         const std::vector<double> splits = cascadeSplits(camera.nearPlane, reach, count, settings.partitioningFactor);
         const glm::dmat4 lightView = lightViewMatrix(directionToSun);
         for (int i = 0; i < count; ++i) {
-            cascades_.push_back(fitCascade(view, splits[static_cast<size_t>(i)], splits[static_cast<size_t>(i) + 1], lightView, resolution, casterReach));
+            cascades_.push_back(fitCascade(view, splits[static_cast<size_t>(i)], splits[static_cast<size_t>(i) + 1], lightView, resolution, casterReach,
+                                           i == cascadeAroundCamera));
             constants_.worldToShadow[i] = glm::mat4(cascades_.back().worldToShadow);
             constants_.texelWorldSize[i / 4][i % 4] = static_cast<float>(cascades_.back().texelWorldSize);
         }

@@ -27,8 +27,10 @@ public:
 
     // Fits the cascades to the camera and the sun (double precision), and writes the constants.
     // casterReach: metres towards the sun beyond each cascade's sphere that casters may stand.
+    // cascadeAroundCamera: the cascade whose map must also hold the camera's place and the
+    // frustum before its split (the light shafts' first marched cascade; -1 for none).
     void update(ID3D11DeviceContext* context, const Camera& camera, double aspectRatio, glm::dvec3 directionToSun,
-                const ShadowSettings& settings, double casterReach);
+                const ShadowSettings& settings, double casterReach, int cascadeAroundCamera = -1);
     // Clears the atlas and calls drawCasters for each cascade with its ShadowCasterConstants
     // buffer, the atlas bound as the depth target, the cascade's tile as the viewport, and a
     // biased, unculled rasterizer state.

@@ -1,10 +1,12 @@
 // The light shafts' ray march (shaders/lightshafts/ray_march.hlsli) on the WARP device, against
 // a CPU computation with a known occluder: the shadow test's horizontal square hovering 45 m
-// over flat ground, drawn into four cascades. Along rays from a camera above it and from one in
+// over flat ground, drawn into the cascades. Along rays from a camera above it and from one in
 // its shadow, the lit length D_lit and the distance to the first lit point D_start must equal
 // the geometry's (the ray's part under the square whose way to the sun meets the square), and
 // the in-scattering integrated over the lit steps must equal the reference atmosphere's
-// integral over the lit parts of the ray.
+// integral over the lit parts of the ray. Two set-ups: four cascades reaching 1 km marched from
+// cascade 0, and the defaults (four cascades reaching 100 km, marched from cascade 1, whose split
+// lies 1.3 km away: the square and every ray lie nearer than it).
 #include "KnownOccluder.h"
 #include "FrameTest.h"
 #include "atmosphere/Atmosphere.h"
@@ -34,6 +36,14 @@ struct ProbeConstants {
 };
 
 constexpr double kMaxRayLength = 800.0;
+
+// The sun of every case: 35 degrees up.
+Sun testSun() {
+    Sun sun;
+    sun.elevationDegrees = 35.0f;
+    sun.azimuthDegrees = -30.0f;
+    return sun;
+}
 
 // The part [first, second] of the ray C + s v, s in [0, length], in the square's shadow: below
 // the square, with the way to the sun crossing the square's height inside it. Empty when
@@ -73,18 +83,23 @@ protected:
         const char* label;
         Camera camera;
         bool cameraInShadow;
+        ShadowSettings shadows;
+        int firstCascade;
     };
 
+    // The cascades' set-ups: four reaching 1 km marched from cascade 0, or the defaults.
+    static ShadowSettings nearCascades() {
+        ShadowSettings s;
+        s.cascades = 4;
+        s.distanceKm = 1.0f;
+        return s;
+    }
+
     void check(const Case& c) {
-        Sun sun;
-        sun.elevationDegrees = 35.0f;
-        sun.azimuthDegrees = -30.0f;
+        const Sun sun = testSun();
         const glm::dvec3 toSun = glm::dvec3(sun.direction());
-        ShadowSettings shadowSettings;
-        shadowSettings.cascades = 4;
-        shadowSettings.distanceKm = 1.0f;
         CascadedShadowMaps shadows(device());
-        shadows.update(context(), c.camera, 16.0 / 9.0, toSun, shadowSettings, 2000.0);
+        shadows.update(context(), c.camera, 16.0 / 9.0, toSun, c.shadows, 2000.0, c.firstCascade);
         drawKnownOccluder(device(), context(), *testShaderLibrary, shadows);
 
         // Small tables: the march, not the tables, is under test; single scattering integrated.
@@ -101,7 +116,7 @@ protected:
         const ScatteringLookup lookup = atmosphere.scatteringLookup(frame, atmosphereSettings);
         ASSERT_TRUE(lookup.ready);
         LightShaftSettings shaftSettings;
-        shaftSettings.firstCascade = 0;  // march from the camera
+        shaftSettings.firstCascade = c.firstCascade;
         ConstantBuffer<gpu::LightShaftConstants> shaftConstants(device());
         shaftConstants.update(context(), LightShafts::constants(shaftSettings, lookup, shadows.inputs().resolution));
         ConstantBuffer<ProbeConstants> probe(device());
@@ -130,16 +145,21 @@ protected:
         const AtmosphereParameters p = AtmosphereParameters::from(atmosphereSettings);
         const atmosphere::ReferenceAtmosphere reference(p);
         const glm::dvec3 earthCentre(0.0, -p.earthRadius, 0.0);
-        const double texel = shadows.cascades().back().texelWorldSize;
+        const std::vector<Cascade>& cascades = shadows.cascades();
+        const glm::dvec3 forward = glm::normalize(glm::dvec3(c.camera.forward()));
         int crossing = 0, worstRay = -1;
         double worstLit = 0.0, worstScattering = 0.0;
         for (size_t i = 0; i < queries.size(); ++i) {
             const glm::dvec3 v(queries[i].a);
             const double length = queries[i].a.w;
             const glm::dvec2 shadow = shadowInterval(camera, v, length, toSun);
+            // The coarsest cascade the march crosses: the one holding the ray's end, or the first marched.
+            size_t coarsest = static_cast<size_t>(c.firstCascade);
+            while (coarsest + 1 < cascades.size() && length * glm::dot(v, forward) > cascades[coarsest].farDepth) ++coarsest;
+            const double texel = cascades[coarsest].texelWorldSize;
             const double shadowed = shadow.y - shadow.x;
             crossing += shadowed > 1.0;
-            // One march step is a texel of the coarsest cascade at most, along the ray: its
+            // One march step is a texel of the coarsest cascade crossed at most, along the ray: its
             // length across the sun's direction. Two edges, each off by a step and the filter's
             // half texel. Where the ray enters the shadow under the square, the casters'
             // slope-scaled bias (2 texels of the square's depth slope, cot(elevation) per texel)
@@ -192,25 +212,44 @@ protected:
 
 };
 
-TEST_F(LightShaftMarch, LitLengthAndInscatteringMatchTheOccludersGeometry) {
+// A camera above the square, looking down across it.
+Camera cameraAboveTheSquare() {
     Camera above;
     above.position = {10.0f, 150.0f, -100.0f};
     above.yawDegrees = 5.0f;
     above.pitchDegrees = -25.0f;
-    check({"camera above the square", above, false});
+    return above;
+}
 
-    // A camera 20 m up where the way to the sun meets the square's middle, looking across the
-    // shadow: its rays start in shadow and leave it.
-    Sun sun;
-    sun.elevationDegrees = 35.0f;
-    sun.azimuthDegrees = -30.0f;
-    const glm::dvec3 toSun = glm::dvec3(sun.direction());
+// A camera 20 m up where the way to the sun meets the square's middle, looking across the
+// shadow: its rays start in shadow and leave it.
+Camera cameraInTheShadow() {
+    const glm::dvec3 toSun = glm::dvec3(testSun().direction());
     const glm::dvec3 middle(0.5 * (kSquare.x + kSquare.z), kSquareHeight, 0.5 * (kSquare.y + kSquare.w));
     Camera inShadow;
     inShadow.position = glm::vec3(middle - toSun * ((kSquareHeight - 20.0) / toSun.y));
     inShadow.yawDegrees = 60.0f;
     inShadow.pitchDegrees = -5.0f;
-    check({"camera in the shadow", inShadow, true});
+    return inShadow;
+}
+
+TEST_F(LightShaftMarch, LitLengthAndInscatteringMatchTheOccludersGeometry) {
+    check({"camera above the square", cameraAboveTheSquare(), false, nearCascades(), 0});
+    check({"camera in the shadow", cameraInTheShadow(), true, nearCascades(), 0});
+}
+
+// At the defaults the first cascade marched is 1, whose split lies about 1.3 km away: the
+// square and the rays (800 m at most) all lie nearer. The march must still see the square's
+// shadow (it used to count everything before split 1 as lit).
+TEST_F(LightShaftMarch, ACasterNearerThanTheFirstMarchedSplitShadowsTheHazeAtTheDefaults) {
+    const LightShaftSettings defaults;
+    const ShadowSettings shadowDefaults;
+    ASSERT_EQ(defaults.firstCascade, 1);
+    const std::vector<double> splits = cascadeSplits(Camera{}.nearPlane, shadowDefaults.distanceKm * 1000.0, shadowDefaults.cascades,
+                                                     shadowDefaults.partitioningFactor);
+    ASSERT_GT(splits[1], kMaxRayLength + 400.0) << "the test needs the square and its rays nearer than split 1";
+    check({"defaults, camera above the square", cameraAboveTheSquare(), false, shadowDefaults, defaults.firstCascade});
+    check({"defaults, camera in the shadow", cameraInTheShadow(), true, shadowDefaults, defaults.firstCascade});
 }
 
 }  // namespace

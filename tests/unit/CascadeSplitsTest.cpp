@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace firmament {
 namespace {
@@ -70,6 +71,36 @@ TEST(CascadeSplits, SphereHoldsTheSliceAndKeepsItsSizeWhenTheCameraTurns) {
             EXPECT_LT(uvz.z, 1.0);
         }
     }
+}
+
+// The light shafts' first marched cascade is fitted around the camera too: its sphere holds the
+// camera's place and every slice of the frustum before its far split, and at the default
+// partition (1 m to 100 km, four cascades, lambda 0.95) it grows little, since the far corners
+// set its size.
+TEST(CascadeSplits, TheCascadeAroundTheCameraHoldsTheWholePyramidAndGrowsLittle) {
+    const glm::dmat4 light = lightViewMatrix(glm::normalize(glm::dvec3(0.3, 0.5, 0.8)));
+    const std::vector<double> splits = cascadeSplits(1.0, 1.0e5, 4, 0.95);
+    const CascadeCamera camera = cameraAt({120.0, 800.0, -40.0}, 0.7, -0.2);
+    const Cascade own = fitCascade(camera, splits[1], splits[2], light, 1024, 1e5);
+    const Cascade around = fitCascade(camera, splits[1], splits[2], light, 1024, 1e5, true);
+    EXPECT_EQ(around.nearDepth, splits[1]);  // the range it shades is still its own
+    EXPECT_GT(glm::length(camera.position - own.centre), own.radius) << "without the option the camera lies outside";
+    std::vector<glm::dvec3> points = sliceCorners(camera, 0.5, splits[1]);
+    points.push_back(camera.position);
+    for (const glm::dvec3& p : points) {
+        const glm::dvec4 uvz = around.worldToShadow * glm::dvec4(p, 1.0);
+        EXPECT_GE(uvz.x, 0.0);
+        EXPECT_LE(uvz.x, 1.0);
+        EXPECT_GE(uvz.y, 0.0);
+        EXPECT_LE(uvz.y, 1.0);
+        EXPECT_GT(uvz.z, 0.0);
+        EXPECT_LT(uvz.z, 1.0);
+    }
+    const double growth = around.texelWorldSize / own.texelWorldSize - 1.0;
+    std::printf("split 1 to 2 = %.0f to %.0f m: texel %.3f m, %.3f m around the camera (%.1f%% larger)\n", splits[1], splits[2],
+                own.texelWorldSize, around.texelWorldSize, 100.0 * growth);
+    EXPECT_GT(growth, 0.0);
+    EXPECT_LT(growth, 0.02);
 }
 
 TEST(CascadeSplits, AWorldPointMovesByWholeTexelsOnlyUnderCameraMotion) {
