@@ -7,7 +7,7 @@
 //   {"format": 1, "name": "...", "warmupFrames": 5, "measuredFrames": 20,
 //    "resolutions": [[1280, 720]], "base": {...},
 //    "views": [{"name": "...", "settings": {...}}], "variants": [{"name": "...", "settings": {...}}],
-//    "ratios": [{"name": "SS-LUT / SS-Int", "numerator": "<variant>", "denominator": "<variant>",
+//    "ratios": [{"name": "SS-LUT + MS-Unoccluded / SS-Int", "numerator": "<variant>", "denominator": "<variant>",
 //                "passes": ["Sky", "Aerial perspective"], "paper": 0.89}],
 //    "tables": true}
 //

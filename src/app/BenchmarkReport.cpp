@@ -138,7 +138,7 @@ std::string benchmarkTable(const BenchmarkPlan& plan, const std::vector<Scenario
         out += "  " + r.ratio->name + ", " + r.view + ", " + std::to_string(r.resolution.x) + "x" + std::to_string(r.resolution.y) + ": frame " +
                format("%.3f", r.frame);
         if (!r.ratio->passes.empty()) out += ", passes " + format("%.3f", r.passes);
-        if (r.ratio->paper) out += " (paper: " + format("%.2f", *r.ratio->paper) + ")";
+        if (r.ratio->paper) out += " (paper, on its own device: " + format("%.2f", *r.ratio->paper) + ")";
         out += "\n";
     }
     if (!tables.empty()) out += "\nTables: computed vs loaded from the cache:\n";
