@@ -8,7 +8,7 @@
 //  - without shafts, single scattering None with higher orders Occluded draws the same light as
 //    with them Unoccluded (the whole ray is lit), not single scattering (docs/atmosphere.md);
 //  - epipolar sampling at its defaults draws, tone mapped, what the brute-force reference draws
-//    (PSNR >= 35 dB) over nine views: the sun ahead high and low, behind, at the side, below the
+//    (PSNR >= 46 dB, no 8-bit step more than 80 apart) over nine views: the sun ahead high and low, behind, at the side, below the
 //    horizon, from 40 km, the open sky over the Earth's horizon without terrain, and below broken
 //    clouds at sunset in both modes of Shafts from clouds;
 //  - the clouds take light out of the haze below them, in both modes;
@@ -209,10 +209,12 @@ TEST(LightShaftCapture, EpipolarSamplingMatchesTheBruteForceReference) {
         const Rgba8Image reference = readPng(captureFolder() / "brute-force.png");
         const golden::Comparison c = golden::compare(epipolar, reference);
         std::printf("%s: PSNR %.1f dB, largest difference %d\n", view.label, c.psnrDb, c.maxDifference);
-        EXPECT_GE(c.psnrDb, 35.0) << view.label;
+        // Measured: 49.2 dB (from 40 km) to 62.1 dB, the clouds' views 53.9 and 54.0; 3 dB spare.
+        EXPECT_GE(c.psnrDb, 46.0) << view.label;
         // PSNR averages a few wrong pixels away: a sample whose depth disagrees with its own ray
-        // lights a silhouette's pixels from the wrong side, by half the range or more.
-        EXPECT_LE(c.maxDifference, 96) << view.label;
+        // lights a silhouette's pixels from the wrong side, by half the range or more. Measured:
+        // 29 steps at most over the terrain, 74 under the clouds.
+        EXPECT_LE(c.maxDifference, 80) << view.label;
     }
 }
 
