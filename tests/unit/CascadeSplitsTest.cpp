@@ -52,6 +52,17 @@ std::vector<glm::dvec3> sliceCorners(const CascadeCamera& c, double nearDepth, d
     return corners;
 }
 
+// The point lies inside the cascade's square and depth range.
+void expectInsideTile(const Cascade& c, glm::dvec3 point) {
+    const glm::dvec4 uvz = c.worldToShadow * glm::dvec4(point, 1.0);
+    EXPECT_GE(uvz.x, 0.0);
+    EXPECT_LE(uvz.x, 1.0);
+    EXPECT_GE(uvz.y, 0.0);
+    EXPECT_LE(uvz.y, 1.0);
+    EXPECT_GT(uvz.z, 0.0);
+    EXPECT_LT(uvz.z, 1.0);
+}
+
 TEST(CascadeSplits, SphereHoldsTheSliceAndKeepsItsSizeWhenTheCameraTurns) {
     const glm::dmat4 light = lightViewMatrix(glm::normalize(glm::dvec3(0.3, 0.5, 0.8)));
     const Cascade reference = fitCascade(cameraAt({0, 1000, 0}, 0.0, 0.0), 100.0, 2000.0, light, 1024, 1e5);
@@ -62,13 +73,7 @@ TEST(CascadeSplits, SphereHoldsTheSliceAndKeepsItsSizeWhenTheCameraTurns) {
         for (const glm::dvec3& corner : sliceCorners(camera, 100.0, 2000.0)) {
             EXPECT_LE(glm::length(corner - c.centre), c.radius * (1.0 + 1e-12));
             // And the corner is inside the shadow map's square and depth range.
-            const glm::dvec4 uvz = c.worldToShadow * glm::dvec4(corner, 1.0);
-            EXPECT_GE(uvz.x, 0.0);
-            EXPECT_LE(uvz.x, 1.0);
-            EXPECT_GE(uvz.y, 0.0);
-            EXPECT_LE(uvz.y, 1.0);
-            EXPECT_GT(uvz.z, 0.0);
-            EXPECT_LT(uvz.z, 1.0);
+            expectInsideTile(c, corner);
         }
     }
 }
@@ -87,15 +92,7 @@ TEST(CascadeSplits, TheCascadeAroundTheCameraHoldsTheWholePyramidAndGrowsLittle)
     EXPECT_GT(glm::length(camera.position - own.centre), own.radius) << "without the option the camera lies outside";
     std::vector<glm::dvec3> points = sliceCorners(camera, 0.5, splits[1]);
     points.push_back(camera.position);
-    for (const glm::dvec3& p : points) {
-        const glm::dvec4 uvz = around.worldToShadow * glm::dvec4(p, 1.0);
-        EXPECT_GE(uvz.x, 0.0);
-        EXPECT_LE(uvz.x, 1.0);
-        EXPECT_GE(uvz.y, 0.0);
-        EXPECT_LE(uvz.y, 1.0);
-        EXPECT_GT(uvz.z, 0.0);
-        EXPECT_LT(uvz.z, 1.0);
-    }
+    for (const glm::dvec3& p : points) expectInsideTile(around, p);
     const double growth = around.texelWorldSize / own.texelWorldSize - 1.0;
     std::printf("split 1 to 2 = %.0f to %.0f m: texel %.3f m, %.3f m around the camera (%.1f%% larger)\n", splits[1], splits[2],
                 own.texelWorldSize, around.texelWorldSize, 100.0 * growth);
