@@ -6,7 +6,9 @@
 // the in-scattering integrated over the lit steps must equal the reference atmosphere's
 // integral over the lit parts of the ray. Two set-ups: four cascades reaching 1 km marched from
 // cascade 0, and the defaults (four cascades reaching 100 km, marched from cascade 1, whose split
-// lies 1.3 km away: the square and every ray lie nearer than it).
+// lies 1.3 km away: the square and every ray lie nearer than it). The table modes (LUT, occluded
+// and unoccluded higher orders) are held to the geometry's lit section and, for LUT, to the CPU
+// integral within the table's own error (checkTableModes).
 #include "KnownOccluder.h"
 #include "FrameTest.h"
 #include "atmosphere/Atmosphere.h"
@@ -36,6 +38,10 @@ struct ProbeConstants {
 };
 
 constexpr double kMaxRayLength = 800.0;
+// view_ray.hlsli's kSingleTable and kHighOrderTable: which table march_probe.hlsl's section and
+// lookUp entries read.
+constexpr int kSingleTableId = 1, kHighOrderTableId = 2;
+
 
 // The sun of every case: 35 degrees up.
 Sun testSun() {
@@ -72,6 +78,29 @@ glm::dvec2 shadowInterval(glm::dvec3 c, glm::dvec3 v, double length, glm::dvec3 
     return {lower, std::max(upper, lower)};
 }
 
+// The section eq. 8 takes along the ray, from the geometry: from the first lit point, the lit
+// length (Yusov 2013's approximation: the lit parts taken as one section).
+glm::dvec2 litSection(glm::dvec3 c, glm::dvec3 v, double length, glm::dvec3 toSun) {
+    const glm::dvec2 shadow = shadowInterval(c, v, length, toSun);
+    const double shadowed = shadow.y - shadow.x;
+    const double firstLit = shadowed > 0.0 && shadow.x <= 0.0 ? shadow.y : 0.0;
+    return {firstLit, std::min(firstLit + (length - shadowed), length)};
+}
+
+// Single scattering's integrand along the ray start + s v (start from the Earth's centre), per
+// unit irradiance: scattering towards the camera times the transmittances to the camera and to
+// the sun (Yusov 2013, eq. 1 without the integral).
+glm::dvec3 singleScatteringIntegrand(const atmosphere::ReferenceAtmosphere& reference, const AtmosphereParameters& p, glm::dvec3 start,
+                                     glm::dvec3 v, glm::dvec3 toSun, double s) {
+    const double cosTheta = glm::dot(v, toSun);
+    const glm::dvec3 point = start + v * s;
+    const glm::dvec3 rho = reference.density(glm::length(point) - p.earthRadius);
+    const glm::dvec3 toCamera = glm::exp(-reference.opticalDepth(reference.netDensity(start, point)));
+    const glm::dvec3 beta = p.rayleighScattering * rho.x * atmosphere::rayleighPhase(cosTheta) +
+                            p.mieScattering * rho.y * atmosphere::miePhase(cosTheta, p.mieAsymmetry);
+    return beta * toCamera * reference.sunTransmittance(point, toSun);
+}
+
 class LightShaftMarch : public FrameTest {
 protected:
     void SetUp() override {
@@ -95,13 +124,108 @@ protected:
         return s;
     }
 
-    void check(const Case& c) {
+    // What the march found along a grid of the camera's rays (to the ground or kMaxRayLength)
+    // through cascades holding the square, in the render modes of `settings`: per ray the march
+    // (D_lit, D_start, begin, end), the shadowed in-scattering and the unshadowed one (the whole
+    // ray, as the atmosphere's passes draw it), per unit irradiance.
+    // With `table` (view_ray.hlsli's kSingleTable, kHighOrderTable), also eq. 8 from that table
+    // over each ray's lit section as the geometry has it (litSection), and the table's look-ups
+    // at the section's ends.
+    struct Probed {
+        std::vector<RayQuery> queries;
+        std::vector<glm::vec4> marched, scattered, unshadowed;
+        std::vector<glm::vec4> section, sectionStart, sectionEnd;  // with a table
+        std::vector<glm::vec4> nearStart, nearEnd;  // eq. 8 within the lit length's tolerance of the section's ends
+        std::vector<Cascade> cascades;
+    };
+
+    Probed probe(const Case& c, Atmosphere& atmosphere, const AtmosphereSettings& atmosphereSettings, int table = 0) {
         const Sun sun = testSun();
         const glm::dvec3 toSun = glm::dvec3(sun.direction());
         CascadedShadowMaps shadows(device());
         shadows.update(context(), c.camera, 16.0 / 9.0, toSun, c.shadows, 2000.0, c.firstCascade);
         drawKnownOccluder(device(), context(), *testShaderLibrary, shadows);
 
+        gpu::FrameConstants constants{};
+        FrameContext frame{device(), context(), *productShaderLibrary, *profiler, targets, frameConstants->get(), constants, c.camera, sun,
+                           0.0, 1.0 / 60.0, true};
+        atmosphere.update(frame, atmosphereSettings);
+        const ScatteringLookup lookup = atmosphere.scatteringLookup(frame, atmosphereSettings);
+        EXPECT_TRUE(lookup.ready);
+        LightShaftSettings shaftSettings;
+        shaftSettings.firstCascade = c.firstCascade;
+        ConstantBuffer<gpu::LightShaftConstants> shaftConstants(device());
+        shaftConstants.update(context(), LightShafts::constants(shaftSettings, lookup, shadows.inputs().resolution));
+        ConstantBuffer<ProbeConstants> probeConstants(device());
+        probeConstants.update(context(), ProbeConstants{glm::vec4(c.camera.position, 1.0f), glm::vec4(glm::vec3(toSun), 0.0f)});
+
+        Probed r;
+        const glm::mat4 toWorld = glm::inverse(c.camera.projection(16.0f / 9.0f) * c.camera.view());
+        const glm::dvec3 camera(c.camera.position);
+        for (int y = 0; y < 18; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const glm::vec4 farPoint = toWorld * glm::vec4((x + 0.5f) / 32.0f * 2.0f - 1.0f, 1.0f - (y + 0.5f) / 18.0f * 2.0f, 0.5f, 1.0f);
+                const glm::dvec3 v = glm::normalize(glm::dvec3(farPoint) / static_cast<double>(farPoint.w) - camera);
+                const double length = v.y < 0.0 ? std::min(-camera.y / v.y, kMaxRayLength) : kMaxRayLength;
+                r.queries.push_back({glm::vec4(glm::vec3(v), static_cast<float>(length)), glm::vec4(0.0f)});
+            }
+        const ShadowInputs inputs = shadows.inputs();
+        context()->CSSetSamplers(1, 1, &inputs.comparison);
+        const std::initializer_list<ID3D11ShaderResourceView*> tables{lookup.netDensity, lookup.singleScattering, lookup.highOrderScattering,
+                                                                       lookup.multipleScattering, inputs.map};
+        const std::initializer_list<ID3D11Buffer*> buffers{lookup.atmosphere, shaftConstants.get(), inputs.constants, probeConstants.get()};
+        r.marched = runProbe({"lightshafts/march_probe.hlsl", "march", "cs_5_0", {}}, r.queries, buffers, tables, lookup.linearClamp);
+        r.scattered = runProbe({"lightshafts/march_probe.hlsl", "inscattering", "cs_5_0", {}}, r.queries, buffers, tables, lookup.linearClamp);
+        r.unshadowed = runProbe({"lightshafts/march_probe.hlsl", "unshadowed", "cs_5_0", {}}, r.queries, buffers, tables, lookup.linearClamp);
+        if (table != 0) {
+            std::vector<RayQuery> sections = r.queries, starts = r.queries, ends = r.queries, nearStarts = r.queries, nearEnds = r.queries;
+            for (size_t i = 0; i < r.queries.size(); ++i) {
+                const glm::dvec3 v(r.queries[i].a);
+                const double length = r.queries[i].a.w;
+                const glm::dvec2 lit = litSection(camera, v, length, glm::dvec3(toSun));
+                const double tolerance = litLengthTolerance(c, shadows.cascades(), v, length);
+                const auto query = [&](double s0, double s1) {
+                    return glm::vec4(static_cast<float>(std::max(s0, 0.0)), static_cast<float>(std::min(s1, length)), static_cast<float>(table), 0.0f);
+                };
+                sections[i].b = query(lit.x, lit.y);
+                starts[i].b = query(lit.x, 0.0);
+                ends[i].b = query(lit.y, 0.0);
+                nearStarts[i].b = query(lit.x - tolerance, lit.x + tolerance);
+                nearEnds[i].b = query(lit.y - tolerance, lit.y + tolerance);
+            }
+            const auto run = [&](const char* entry, const std::vector<RayQuery>& q) {
+                return runProbe({"lightshafts/march_probe.hlsl", entry, "cs_5_0", {}}, q, buffers, tables, lookup.linearClamp);
+            };
+            r.section = run("section", sections);
+            r.sectionStart = run("lookUp", starts);
+            r.sectionEnd = run("lookUp", ends);
+            r.nearStart = run("section", nearStarts);
+            r.nearEnd = run("section", nearEnds);
+        }
+        r.cascades = shadows.cascades();
+        return r;
+    }
+
+    // The tolerance of a ray's lit length: one march step is a texel of the coarsest cascade
+    // crossed at most, along the ray: its length across the sun's direction. Two edges, each off
+    // by a step and the filter's half texel. Where the ray enters the shadow under the square,
+    // the casters' slope-scaled bias (2 texels of the square's depth slope, cot(elevation) per
+    // texel) lets it stay lit while its depth below the square grows, at |v.y| / sin(elevation)
+    // per metre.
+    static double litLengthTolerance(const Case& c, const std::vector<Cascade>& cascades, glm::dvec3 v, double length) {
+        const glm::dvec3 toSun = glm::dvec3(testSun().direction());
+        const glm::dvec3 forward = glm::normalize(glm::dvec3(c.camera.forward()));
+        // The coarsest cascade the march crosses: the one holding the ray's end, or the first marched.
+        size_t coarsest = static_cast<size_t>(c.firstCascade);
+        while (coarsest + 1 < cascades.size() && length * glm::dot(v, forward) > cascades[coarsest].farDepth) ++coarsest;
+        const double texel = cascades[coarsest].texelWorldSize;
+        const double across = std::max(glm::length(v - toSun * glm::dot(v, toSun)), 0.05);
+        const double cosElevation = std::sqrt(1.0 - toSun.y * toSun.y);
+        return texel * (3.0 / across + 2.5 * cosElevation / std::max(std::abs(v.y), 0.05)) + 0.05;
+    }
+
+    void check(const Case& c) {
+        const glm::dvec3 toSun = glm::dvec3(testSun().direction());
         // Small tables: the march, not the tables, is under test; single scattering integrated.
         AtmosphereSettings atmosphereSettings;
         atmosphereSettings.resolution = LutResolution::Small;
@@ -109,65 +233,24 @@ protected:
         atmosphereSettings.singleScattering = SingleScatteringMode::Integration;
         atmosphereSettings.multipleScattering = MultipleScatteringMode::None;
         Atmosphere atmosphere(device(), TableStorage{});
-        gpu::FrameConstants constants{};
-        FrameContext frame{device(), context(), *productShaderLibrary, *profiler, targets, frameConstants->get(), constants, c.camera, sun,
-                           0.0, 1.0 / 60.0, true};
-        atmosphere.update(frame, atmosphereSettings);
-        const ScatteringLookup lookup = atmosphere.scatteringLookup(frame, atmosphereSettings);
-        ASSERT_TRUE(lookup.ready);
-        LightShaftSettings shaftSettings;
-        shaftSettings.firstCascade = c.firstCascade;
-        ConstantBuffer<gpu::LightShaftConstants> shaftConstants(device());
-        shaftConstants.update(context(), LightShafts::constants(shaftSettings, lookup, shadows.inputs().resolution));
-        ConstantBuffer<ProbeConstants> probe(device());
-        probe.update(context(), ProbeConstants{glm::vec4(c.camera.position, 1.0f), glm::vec4(glm::vec3(toSun), 0.0f)});
-
-        // Rays through a grid of the camera's view, to the ground or kMaxRayLength.
-        const glm::mat4 toWorld = glm::inverse(c.camera.projection(16.0f / 9.0f) * c.camera.view());
+        const Probed probed = probe(c, atmosphere, atmosphereSettings);
+        const std::vector<RayQuery>& queries = probed.queries;
+        const auto& marched = probed.marched;
+        const auto& scattered = probed.scattered;
         const glm::dvec3 camera(c.camera.position);
-        std::vector<RayQuery> queries;
-        for (int y = 0; y < 18; ++y)
-            for (int x = 0; x < 32; ++x) {
-                const glm::vec4 farPoint = toWorld * glm::vec4((x + 0.5f) / 32.0f * 2.0f - 1.0f, 1.0f - (y + 0.5f) / 18.0f * 2.0f, 0.5f, 1.0f);
-                const glm::dvec3 v = glm::normalize(glm::dvec3(farPoint) / static_cast<double>(farPoint.w) - camera);
-                const double length = v.y < 0.0 ? std::min(-camera.y / v.y, kMaxRayLength) : kMaxRayLength;
-                queries.push_back({glm::vec4(glm::vec3(v), static_cast<float>(length)), glm::vec4(0.0f)});
-            }
-        const ShadowInputs inputs = shadows.inputs();
-        context()->CSSetSamplers(1, 1, &inputs.comparison);
-        const std::initializer_list<ID3D11ShaderResourceView*> tables{lookup.netDensity, lookup.singleScattering, lookup.highOrderScattering,
-                                                                       lookup.multipleScattering, inputs.map};
-        const auto marched = runProbe({"lightshafts/march_probe.hlsl", "march", "cs_5_0", {}}, queries,
-                                      {lookup.atmosphere, shaftConstants.get(), inputs.constants, probe.get()}, tables, lookup.linearClamp);
-        const auto scattered = runProbe({"lightshafts/march_probe.hlsl", "inscattering", "cs_5_0", {}}, queries,
-                                        {lookup.atmosphere, shaftConstants.get(), inputs.constants, probe.get()}, tables, lookup.linearClamp);
 
         const AtmosphereParameters p = AtmosphereParameters::from(atmosphereSettings);
         const atmosphere::ReferenceAtmosphere reference(p);
         const glm::dvec3 earthCentre(0.0, -p.earthRadius, 0.0);
-        const std::vector<Cascade>& cascades = shadows.cascades();
-        const glm::dvec3 forward = glm::normalize(glm::dvec3(c.camera.forward()));
         int crossing = 0, worstRay = -1;
         double worstLit = 0.0, worstScattering = 0.0;
         for (size_t i = 0; i < queries.size(); ++i) {
             const glm::dvec3 v(queries[i].a);
             const double length = queries[i].a.w;
             const glm::dvec2 shadow = shadowInterval(camera, v, length, toSun);
-            // The coarsest cascade the march crosses: the one holding the ray's end, or the first marched.
-            size_t coarsest = static_cast<size_t>(c.firstCascade);
-            while (coarsest + 1 < cascades.size() && length * glm::dot(v, forward) > cascades[coarsest].farDepth) ++coarsest;
-            const double texel = cascades[coarsest].texelWorldSize;
             const double shadowed = shadow.y - shadow.x;
             crossing += shadowed > 1.0;
-            // One march step is a texel of the coarsest cascade crossed at most, along the ray: its
-            // length across the sun's direction. Two edges, each off by a step and the filter's
-            // half texel. Where the ray enters the shadow under the square, the casters'
-            // slope-scaled bias (2 texels of the square's depth slope, cot(elevation) per texel)
-            // lets it stay lit while its depth below the square grows, at |v.y| / sin(elevation)
-            // per metre.
-            const double across = std::max(glm::length(v - toSun * glm::dot(v, toSun)), 0.05);
-            const double cosElevation = std::sqrt(1.0 - toSun.y * toSun.y);
-            const double tolerance = texel * (3.0 / across + 2.5 * cosElevation / std::max(std::abs(v.y), 0.05)) + 0.05;
+            const double tolerance = litLengthTolerance(c, probed.cascades, v, length);
             const glm::vec4 m = marched[i];
             const double litLength = m.x + m.z + (length - m.w);  // the stretches not marched are lit
             const double litError = std::abs(litLength - (length - shadowed));
@@ -182,15 +265,7 @@ protected:
 
             // Single scattering over the lit parts, [0, first] and [second, length].
             const glm::dvec3 start = camera - earthCentre;
-            const double cosTheta = glm::dot(v, toSun);
-            const auto integrand = [&](double s) {
-                const glm::dvec3 point = start + v * s;
-                const glm::dvec3 rho = reference.density(glm::length(point) - p.earthRadius);
-                const glm::dvec3 toCamera = glm::exp(-reference.opticalDepth(reference.netDensity(start, point)));
-                const glm::dvec3 beta = p.rayleighScattering * rho.x * atmosphere::rayleighPhase(cosTheta) +
-                                        p.mieScattering * rho.y * atmosphere::miePhase(cosTheta, p.mieAsymmetry);
-                return beta * toCamera * reference.sunTransmittance(point, toSun);
-            };
+            const auto integrand = [&](double s) { return singleScatteringIntegrand(reference, p, start, v, toSun, s); };
             glm::dvec3 expected(0.0);
             if (shadowed > 0.0) {
                 expected += atmosphere::gaussLegendre3(integrand, 0.0, shadow.x, 4);
@@ -210,6 +285,106 @@ protected:
         EXPECT_GT(crossing, 60) << c.label << ": too few rays cross the shadow to test it";
     }
 
+
+    // The table modes (Yusov 2013, eq. 8 over the lit section [D_start, D_start + D_lit]), Medium
+    // tables with four orders, on the rays that end at the ground. Two things are held apart:
+    //  - the march and eq. 8's assembly: the light in each mode (LUT; Occluded higher orders)
+    //    equals eq. 8 from the same table over the lit section as the geometry has it
+    //    (litSection), within the table's light over the lit length's tolerance at each end of
+    //    the section (and 10^-4 of the ray's light for float sums);
+    //  - LUT against the CPU integral of single scattering over the lit parts. Allowed: eq. 8's
+    //    approximation (the lit parts taken as one section from the first lit point: exact for a
+    //    ray that leaves the shadow and stays lit, computed here from the geometry), the table's
+    //    own error at the section's two ends (its look-ups against the CPU's integral from there
+    //    to the ground, times the transmittance), the assembly's allowance (the lit length's
+    //    tolerance), and 2% of the light (the look-ups' transmittances from the net density table).
+    //  - Unoccluded higher orders: the whole-ray light whatever the shadow.
+    // The higher orders have no CPU integral along a ray (their tables are held to Monte Carlo at
+    // random points: AtmosphereTables.HighOrderScatteringMatchesMonteCarlo). On a ray that ends in
+    // mid-air (these end at 800 m) both of eq. 8's look-ups hold the whole sky beyond, and their
+    // difference carries the table's error of that, which is no fault of the march.
+    void checkTableModes(const Case& c) {
+        const glm::dvec3 toSun = glm::dvec3(testSun().direction());
+        AtmosphereSettings settings;
+        settings.resolution = LutResolution::Medium;
+        settings.scatteringOrders = 4;
+        Atmosphere atmosphere(device(), TableStorage{});
+        settings.singleScattering = SingleScatteringMode::Table;
+        settings.multipleScattering = MultipleScatteringMode::None;
+        const Probed lut = probe(c, atmosphere, settings, kSingleTableId);
+        settings.singleScattering = SingleScatteringMode::None;
+        settings.multipleScattering = MultipleScatteringMode::Occluded;
+        const Probed occluded = probe(c, atmosphere, settings, kHighOrderTableId);
+        settings.multipleScattering = MultipleScatteringMode::Unoccluded;
+        const Probed unoccluded = probe(c, atmosphere, settings);
+
+        const AtmosphereParameters p = AtmosphereParameters::from(settings);
+        const atmosphere::ReferenceAtmosphere reference(p);
+        const glm::dvec3 camera(c.camera.position);
+        const glm::dvec3 start = camera - glm::dvec3(0.0, -p.earthRadius, 0.0);
+        const auto over = [](const auto& f, double a, double b) { return b > a ? atmosphere::gaussLegendre3(f, a, b, 4) : glm::dvec3(0.0); };
+        double worstLutAssembly = 0.0, worstOccludedAssembly = 0.0, worstLut = 0.0, worstUnoccluded = 0.0;
+        double largestApproximation = 0.0, largestTableError = 0.0;
+        int toTheGround = 0, crossing = 0;
+        for (size_t i = 0; i < lut.queries.size(); ++i) {
+            const glm::dvec3 v(lut.queries[i].a);
+            const double length = lut.queries[i].a.w;
+            const double unoccludedError = std::abs(unoccluded.scattered[i].b - unoccluded.unshadowed[i].b) / unoccluded.unshadowed[i].b;
+            EXPECT_LT(unoccludedError, 1e-5) << c.label << ", Unoccluded, ray " << i << ": " << unoccluded.scattered[i].b << " with the shadow, "
+                                             << unoccluded.unshadowed[i].b << " without";
+            worstUnoccluded = std::max(worstUnoccluded, unoccludedError);
+            if (!(v.y < 0.0 && -camera.y / v.y <= kMaxRayLength)) continue;  // ends in mid-air
+            ++toTheGround;
+            const glm::dvec2 shadow = shadowInterval(camera, v, length, toSun);
+            const double shadowed = shadow.y - shadow.x;
+            crossing += shadowed > 1.0;
+            const glm::dvec2 section = litSection(camera, v, length, toSun);
+            const auto integrand = [&](double s) { return singleScatteringIntegrand(reference, p, start, v, toSun, s); };
+
+            // The assembly: a lit length off by the tolerance moves a section's end by as much, and
+            // eq. 8 by at most the table's light within the tolerance of each end (eq. 8 from the
+            // same table over those stretches), plus 10^-4 of the ray's light for float sums.
+            const auto assemblyAllowance = [&](const Probed& probed) {
+                return probed.nearStart[i].b + probed.nearEnd[i].b + 1e-4 * probed.unshadowed[i].b;
+            };
+            const double lutAllowance = assemblyAllowance(lut);
+            const double occludedAllowance = assemblyAllowance(occluded);
+            const double lutAssembly = std::abs(lut.scattered[i].b - lut.section[i].b);
+            EXPECT_LT(lutAssembly, lutAllowance) << c.label << ", LUT, ray " << i << ": " << lut.scattered[i].b
+                                                           << ", eq. 8 over the geometry's section " << lut.section[i].b;
+            worstLutAssembly = std::max(worstLutAssembly, lutAssembly / lutAllowance);
+            const double occludedAssembly = std::abs(occluded.scattered[i].b - occluded.section[i].b);
+            EXPECT_LT(occludedAssembly, occludedAllowance) << c.label << ", Occluded, ray " << i << ": " << occluded.scattered[i].b
+                                                                     << ", eq. 8 over the geometry's section " << occluded.section[i].b;
+            worstOccludedAssembly = std::max(worstOccludedAssembly, occludedAssembly / occludedAllowance);
+
+            // LUT against the CPU integral over the lit parts.
+            const glm::dvec3 whole = over(integrand, 0.0, length);
+            const glm::dvec3 lit = shadowed > 0.0 ? over(integrand, 0.0, shadow.x) + over(integrand, shadow.y, length) : whole;
+            const double approximation = std::abs(over(integrand, section.x, section.y).b - lit.b);
+            largestApproximation = std::max(largestApproximation, approximation / whole.b);
+            // The table's error at a point s of the ray: its look-up against the CPU's integral from
+            // there to the ground, times the transmittance from the camera.
+            const auto tableError = [&](double s, const glm::vec4& looked) {
+                const glm::dvec3 from = start + v * s;
+                const glm::dvec3 rest = over([&](double t) { return singleScatteringIntegrand(reference, p, from, v, toSun, t); }, 0.0, length - s);
+                return looked.w * std::abs(looked.b - rest.b);
+            };
+            const double table = tableError(section.x, lut.sectionStart[i]) + tableError(section.y, lut.sectionEnd[i]);
+            largestTableError = std::max(largestTableError, table / whole.b);
+            const double lutAllowed = approximation + table + lutAllowance + 0.02 * lut.scattered[i].b;
+            const double lutError = std::abs(lut.scattered[i].b - lit.b);
+            EXPECT_LT(lutError, lutAllowed) << c.label << ", LUT, ray " << i << ": " << lut.scattered[i].b << ", expected " << lit.b
+                                            << " (approximation " << approximation << ", table " << table << ")";
+            worstLut = std::max(worstLut, lutError / lutAllowed);
+        }
+        std::printf("%s: %d rays to the ground, %d through the shadow. Largest error of its allowance: assembly LUT %.2f, Occluded %.2f; "
+                    "LUT against the CPU %.2f (eq. 8's approximation up to %.3f of the whole ray, the table's error at the ends up to "
+                    "%.3f); Unoccluded against the unshadowed ray (%zu rays) %.1e\n",
+                    c.label, toTheGround, crossing, worstLutAssembly, worstOccludedAssembly, worstLut, largestApproximation, largestTableError,
+                    lut.queries.size(), worstUnoccluded);
+        EXPECT_GT(crossing, 60) << c.label << ": too few rays to the ground cross the shadow to test it";
+    }
 };
 
 // A camera above the square, looking down across it.
@@ -250,6 +425,16 @@ TEST_F(LightShaftMarch, ACasterNearerThanTheFirstMarchedSplitShadowsTheHazeAtThe
     ASSERT_GT(splits[1], kMaxRayLength + 400.0) << "the test needs the square and its rays nearer than split 1";
     check({"defaults, camera above the square", cameraAboveTheSquare(), false, shadowDefaults, defaults.firstCascade});
     check({"defaults, camera in the shadow", cameraInTheShadow(), true, shadowDefaults, defaults.firstCascade});
+}
+
+// The table modes against the CPU at both set-ups: the near cascades marched from 0, and the
+// defaults, where the square and the rays lie nearer than split 1.
+TEST_F(LightShaftMarch, TheTableModesMatchTheCpuOverTheLitSection) {
+    checkTableModes({"camera above the square", cameraAboveTheSquare(), false, nearCascades(), 0});
+    checkTableModes({"camera in the shadow", cameraInTheShadow(), true, nearCascades(), 0});
+    const LightShaftSettings defaults;
+    checkTableModes({"defaults, camera above the square", cameraAboveTheSquare(), false, ShadowSettings{}, defaults.firstCascade});
+    checkTableModes({"defaults, camera in the shadow", cameraInTheShadow(), true, ShadowSettings{}, defaults.firstCascade});
 }
 
 }  // namespace

@@ -2,6 +2,10 @@
 // along rays the test chooses, through cascades holding a known occluder.
 //   march:        q.a = (view direction xyz, ray length) -> (D_lit, D_start, marched begin, marched end)
 //   inscattering: the same query -> (shadowed in-scattering rgb per unit irradiance, 0)
+//   unshadowed:   the same query -> (the whole ray's in-scattering, as the atmosphere's passes
+//                 draw it, rgb per unit irradiance, 0)
+//   section:      q.b = (s0, s1, table) -> (eq. 8 over [s0, s1] from that table, rgb, 0)
+//   lookUp:       q.b = (s, -, table) -> (the table's light at s along the ray, rgb; T(start -> s), blue)
 // The rays start at the camera (inside the atmosphere), probe.camera.
 #include "atmosphere/atmosphere_structures.hlsli"
 #include "lightshafts/lightshaft_structures.hlsli"
@@ -51,4 +55,23 @@ void march(uint3 id : SV_DispatchThreadID) {
 [numthreads(64, 1, 1)]
 void inscattering(uint3 id : SV_DispatchThreadID) {
     results[id.x] = float4(shadowedInscattering(probeRay(queries[id.x]), toSun.xyz), 0.0);
+}
+
+[numthreads(64, 1, 1)]
+void unshadowed(uint3 id : SV_DispatchThreadID) {
+    results[id.x] = float4(scatteringAlongRay(probeRay(queries[id.x]), toSun.xyz, lightShafts.mode.x, lightShafts.mode.z, (int)lightShafts.mode.y), 0.0);
+}
+
+[numthreads(64, 1, 1)]
+void section(uint3 id : SV_DispatchThreadID) {
+    Query q = queries[id.x];
+    results[id.x] = float4(tableSection((uint)q.b.z, probeRay(q), toSun.xyz, q.b.x, q.b.y), 0.0);
+}
+
+[numthreads(64, 1, 1)]
+void lookUp(uint3 id : SV_DispatchThreadID) {
+    Query q = queries[id.x];
+    ViewRay ray = probeRay(q);
+    float3 light = lookUpTable((uint)q.b.z, ray.start + ray.viewDir * q.b.x, ray.viewDir, toSun.xyz, ray.hitsGround ? kBelowHorizon : kAboveHorizon);
+    results[id.x] = float4(light, transmittanceTo(ray, q.b.x).b);
 }
