@@ -22,7 +22,7 @@ struct EpipolarConstants {
     uint4 modes;           // x: extinction (0 per pixel, 1 from epipolar space); yzw: unused
     float4 epipole;        // xy: the sun's projection in NDC (the anti-epipole's with the sun behind the camera),
                            // at most 100 from the centre; z: 1 when it lies on the screen; w: 1 when the sun is behind
-    float4 refinement;     // x: threshold; y: the in-scattering criterion's floor (per unit irradiance); zw: unused
+    float4 refinement;     // x: threshold; y: the in-scattering criterion's floor (per unit irradiance); z: the Depth criterion's threshold; w: unused
     float4 cameraForward;  // xyz: the camera's forward axis, along which camera-space depth counts; w: unused
     uint4 trees;           // the 1D min/max trees: x: walked (built this frame); y: entries of level 0 (the cascades'
                            // resolution); z: the top level, log2(y); w: 16-bit unorm (else 32-bit float)

@@ -5,7 +5,8 @@
 //    step divided by the epipole sampling density near the epipole, where the light varies
 //    fastest), and at the last sample.
 //  - Neighbours i and i + 1 are alike when the criterion differs by less than the threshold:
-//    camera-space depth relative to the larger, or each colour of the coarse in-scattering
+//    camera-space depth relative to the larger (against a fifth of the threshold, as in Intel's
+//    sample), or each colour of the coarse in-scattering
 //    relative to the larger (never less than a floor, so that the dark sky does not refine
 //    everywhere). Where neighbours between two initial samples are not alike, the samples on
 //    both sides of the break are marched too.
@@ -27,7 +28,7 @@ bool samplesAlike(uint i, uint slice) {
     float4 b = sampleCoordinates.Load(int3(i + 1, slice, 0));
     if (!validSample(a) || !validSample(b)) return false;
     float threshold = epipolar.refinement.x;
-    if (epipolar.options.x == 0) return abs(a.z - b.z) / max(max(a.z, b.z), 1.0) < threshold;
+    if (epipolar.options.x == 0) return abs(a.z - b.z) / max(max(a.z, b.z), 1.0) < epipolar.refinement.z;
     float3 la = coarseInscattering.Load(int3(i, slice, 0)).rgb;
     float3 lb = coarseInscattering.Load(int3(i + 1, slice, 0)).rgb;
     return all(abs(la - lb) / max(max(la, lb), epipolar.refinement.y) < threshold);

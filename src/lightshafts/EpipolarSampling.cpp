@@ -58,7 +58,7 @@ gpu::EpipolarConstants EpipolarSampling::constants(const LightShaftSettings& set
     // On the screen: within the rectangle of the outermost pixels' centres (epipolar_geometry.hlsli).
     const bool onScreen = std::abs(e.x) <= 1.0f - frame.screen.z && std::abs(e.y) <= 1.0f - frame.screen.w;
     c.epipole = glm::vec4(e, onScreen ? 1.0f : 0.0f, behind ? 1.0f : 0.0f);
-    c.refinement = glm::vec4(settings.refinementThreshold, kInscatteringFloor, 0.0f, 0.0f);
+    c.refinement = glm::vec4(settings.refinementThreshold, kInscatteringFloor, settings.depthRefinementThreshold(), 0.0f);
     c.cameraForward = glm::vec4(cameraForward, 0.0f);
     if (settings.minMaxOptimization && shadows.map && settings.firstCascade < shadows.cascades) {
         unsigned levels = 0;

@@ -67,6 +67,12 @@ struct LightShaftSettings {
         return parts > kMaxCascadeParts ? CascadeProcessing::SinglePass : cascadeProcessing;
     }
 
+    // The Depth criterion's threshold: a fifth of the refinement threshold, as in Intel's sample
+    // (camera-space depth changes along a slice far more smoothly than the light does, and at
+    // the threshold itself the Depth criterion refined too little: docs/lightshafts.md,
+    // "Departures from Intel's sample").
+    float depthRefinementThreshold() const { return 0.2f * refinementThreshold; }
+
     // The initial step as the passes use it: at most a eighth of the samples.
     int effectiveInitialStep() const {
         const int most = samplesPerSlice / 8 > 1 ? samplesPerSlice / 8 : 1;

@@ -279,7 +279,7 @@ std::vector<Sources> twinSources(const std::vector<glm::vec4>& samples, const gl
         for (int i = 0; i + 1 < n; ++i)
             if (valid(i) && valid(i + 1))
                 alike[static_cast<size_t>(i)] =
-                    std::abs(row[i].z - row[i + 1].z) / std::max({row[i].z, row[i + 1].z, 1.0f}) < settings.refinementThreshold;
+                    std::abs(row[i].z - row[i + 1].z) / std::max({row[i].z, row[i + 1].z, 1.0f}) < settings.depthRefinementThreshold();
         for (int i = 0; i < n; ++i) {
             if (!valid(i)) continue;
             int step = settings.effectiveInitialStep();
