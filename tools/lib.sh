@@ -13,6 +13,35 @@ FIRMAMENT_MIRROR=${FIRMAMENT_MIRROR:-http://deb.debian.org/debian}
 log() { printf '[firmament] %s\n' "$*" >&2; }
 die() { printf '[firmament] error: %s\n' "$*" >&2; exit 1; }
 
+# The Direct3D 11 implementation the Windows programs run on under Wine (docs/building.md, "Two
+# Direct3D 11 implementations"): wined3d, Wine's own over OpenGL on llvmpipe (the default), or
+# dxvk, DXVK over Vulkan on Mesa's lavapipe. tools/demo, tools/test and tools/bench take
+# --d3d11 NAME; tools/sandbox/wine-env picks the prefix and the DLLs by it.
+FIRMAMENT_D3D11=${FIRMAMENT_D3D11:-wined3d}
+check_d3d11() {
+    case "$FIRMAMENT_D3D11" in
+        wined3d | dxvk) ;;
+        *) die "--d3d11 $FIRMAMENT_D3D11: no such Direct3D 11 implementation (wined3d or dxvk)" ;;
+    esac
+}
+# take_d3d11_option ARGS...: sets FIRMAMENT_D3D11 from a --d3d11 NAME (or --d3d11=NAME) among the
+# arguments, and leaves the other arguments, in order, in the array ARGUMENTS.
+take_d3d11_option() {
+    ARGUMENTS=()
+    while [ "$#" -gt 0 ]; do
+        case "$1" in
+            --d3d11)
+                [ "$#" -ge 2 ] || die "--d3d11 needs a name: wined3d or dxvk"
+                FIRMAMENT_D3D11=$2
+                shift 2
+                ;;
+            --d3d11=*) FIRMAMENT_D3D11=${1#--d3d11=}; shift ;;
+            *) ARGUMENTS+=("$1"); shift ;;
+        esac
+    done
+    check_d3d11
+}
+
 # step "description" command...: runs a command, printing what it does and how long it took.
 step() {
     local what=$1; shift
@@ -68,6 +97,7 @@ in_sysroot() {
         --setenv HOME /root
         --setenv PATH /usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin
         --setenv LANG C.UTF-8
+        --setenv FIRMAMENT_D3D11 "$FIRMAMENT_D3D11"
         --unsetenv DISPLAY --unsetenv XAUTHORITY
         # The compiler cache (cmake/FirmamentCompilerCache.cmake) lives in the cache folder, so
         # that it outlives a checkout. Its objects are keyed by the contents of the source and

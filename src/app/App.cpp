@@ -468,6 +468,7 @@ void App::captureFrame(const std::string& name) {
     d.directionToSun = state_.sun.direction();
     d.settings = stateToJson(state_).dump(2);
     d.adapter = gpu_->device.describe();
+    d.implementation = implementationId(gpu_->device.implementation());
     d.frame = static_cast<int>(timer_.frameCount());
     d.techniques = gpu_->renderer.captureAttributes(state_);
     writeCapture(options_.capturePng(name), options_.captureExr(name), readTexture2D(device, context, outputTexture()),
@@ -495,7 +496,8 @@ int App::runBenchmark(const BenchmarkPlan& plan) {
     const BenchmarkRun run = firmament::runBenchmark(gpu_->renderer, gpu_->device.context(), plan, scratch);
     std::error_code ec;
     std::filesystem::remove_all(scratch, ec);
-    const BenchmarkInfo info{kFirmamentVersion, gpu_->device.describe(), options_.benchmark ? options_.benchmark->string() : std::string()};
+    const BenchmarkInfo info{kFirmamentVersion, gpu_->device.describe(), implementationId(gpu_->device.implementation()),
+                             options_.benchmark ? options_.benchmark->string() : std::string()};
     const std::string text = benchmarkReport(plan, run.results, run.tables, info).dump(2) + "\n";
     writeFileText(options_.benchmarkResults(), text);
     std::fputs(benchmarkTable(plan, run.results, run.tables).c_str(), stdout);

@@ -66,7 +66,7 @@ std::vector<RatioResult> benchmarkRatios(const BenchmarkPlan& plan, const std::v
 json benchmarkReport(const BenchmarkPlan& plan, const std::vector<ScenarioResult>& results, const std::vector<TableTiming>& tables,
                      const BenchmarkInfo& info) {
     json report;
-    report["firmament"] = {{"version", info.version}, {"adapter", info.adapter}};
+    report["firmament"] = {{"version", info.version}, {"adapter", info.adapter}, {"implementation", info.implementation}};
     report["benchmark"] = {{"name", plan.name},
                            {"description", plan.description},
                            {"file", info.scenarioFile},

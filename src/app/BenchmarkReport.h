@@ -39,6 +39,7 @@ struct ScenarioResult {
 struct BenchmarkInfo {
     std::string version;
     std::string adapter;
+    std::string implementation;  // implementationId: "wined3d", "dxvk", "windows"
     std::string scenarioFile;
 };
 

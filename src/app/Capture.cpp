@@ -17,6 +17,7 @@ ExrAttributes captureAttributes(const CaptureDescription& d, int width, int heig
         {"firmament.directionToSun", d.directionToSun},
         {"firmament.settings", d.settings},
         {"firmament.adapter", d.adapter},
+        {"firmament.d3d11", d.implementation},
         {"firmament.frame", d.frame},
     };
     attributes.insert(d.techniques.begin(), d.techniques.end());

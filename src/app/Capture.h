@@ -1,7 +1,8 @@
 #pragma once
 // Captures of the final frame: the display image as PNG and the HDR frame as OpenEXR (half
 // float RGBA). The EXR header describes the frame: resolution, camera matrices, sun
-// direction, the settings as JSON, the adapter, the program version, and what the techniques
+// direction, the settings as JSON, the adapter and the Direct3D 11 implementation, the program
+// version, and what the techniques
 // record of themselves (the exposure and operator of the tone mapping).
 #include "core/Camera.h"
 #include "core/ExrImage.h"
@@ -18,6 +19,7 @@ struct CaptureDescription {
     glm::vec3 directionToSun{0.0f, 1.0f, 0.0f};
     std::string settings;  // "name = value" lines
     std::string adapter;
+    std::string implementation;  // implementationId: "wined3d", "dxvk", "windows"
     int frame = 0;
     ExrAttributes techniques;  // what each technique records of itself ("firmament.toneMapping.*", ...)
 };

@@ -22,8 +22,17 @@ std::string featureLevelName(D3D_FEATURE_LEVEL level) {
 Device::Device(const DeviceOptions& options) {
     check(CreateDXGIFactory1(IID_PPV_ARGS(&factory_)), "CreateDXGIFactory1");
 
+    implementation_ = detectD3D11Implementation(factory_.Get());
+
     ComPtr<IDXGIAdapter1> adapter;
     D3D_DRIVER_TYPE driverType = options.driver == DriverType::Warp ? D3D_DRIVER_TYPE_WARP : D3D_DRIVER_TYPE_HARDWARE;
+    // DXVK has no WARP: asked for one, it warns of an unsupported driver type and takes its first
+    // Vulkan device anyway. Asking for that device is the same without the warning; the tools run
+    // DXVK on lavapipe, a CPU device, as WARP is one.
+    if (implementation_ == D3D11Implementation::Dxvk && driverType == D3D_DRIVER_TYPE_WARP) {
+        driverType = D3D_DRIVER_TYPE_HARDWARE;
+        warpNotAvailable_ = true;
+    }
     if (options.adapterIndex) {
         if (factory_->EnumAdapters1(*options.adapterIndex, &adapter) == DXGI_ERROR_NOT_FOUND) {
             std::string list;
@@ -106,7 +115,8 @@ void Device::waitForGpu() const {
 }
 
 std::string Device::describe() const {
-    return adapterName_ + " (feature level " + featureLevelName(featureLevel_) + ")";
+    return adapterName_ + " (feature level " + featureLevelName(featureLevel_) + ") through " + implementationName(implementation_) +
+           (warpNotAvailable_ ? ", which has no WARP device: its first adapter" : "");
 }
 
 }  // namespace firmament

@@ -2,6 +2,7 @@
 // The Direct3D 11 device and its immediate context, created as DeviceOptions asks. The device
 // the program is given counts the objects it makes (CountingDevice).
 #include "core/Text.h"
+#include "gpu/D3D11Implementation.h"
 #include "gpu/DeviceOptions.h"
 #include "gpu/LiveObjects.h"
 
@@ -27,7 +28,10 @@ public:
     const std::string& adapterName() const { return adapterName_; }
     D3D_FEATURE_LEVEL featureLevel() const { return featureLevel_; }
     bool tearingSupported() const { return tearingSupported_; }
-    std::string describe() const;  // "adapter (feature level 11_1)"
+    D3D11Implementation implementation() const { return implementation_; }
+    // "adapter (feature level 11_1) through implementation", and where a WARP device was asked of
+    // DXVK, which has none, that its first adapter was taken.
+    std::string describe() const;
     // Empty while the device works; after DXGI_ERROR_DEVICE_REMOVED, _RESET, _HUNG and the like,
     // why (ID3D11Device::GetDeviceRemovedReason, named).
     std::string removedReason() const;
@@ -46,6 +50,8 @@ private:
     std::string adapterName_;
     D3D_FEATURE_LEVEL featureLevel_ = D3D_FEATURE_LEVEL_11_0;
     bool tearingSupported_ = false;
+    D3D11Implementation implementation_ = D3D11Implementation::Windows;
+    bool warpNotAvailable_ = false;
 };
 
 std::string featureLevelName(D3D_FEATURE_LEVEL level);

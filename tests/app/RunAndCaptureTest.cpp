@@ -94,8 +94,10 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
 
     const auto& a = file.attributes;
     for (const char* name : {"firmament.version", "firmament.resolution", "firmament.view", "firmament.projection",
-                             "firmament.directionToSun", "firmament.settings", "firmament.adapter", "firmament.frame"})
-        EXPECT_TRUE(a.count(name)) << "missing header attribute " << name;
+                             "firmament.directionToSun", "firmament.settings", "firmament.adapter", "firmament.d3d11", "firmament.frame"})
+        ASSERT_TRUE(a.count(name)) << "missing header attribute " << name;
+    // The implementation the tools chose is the one that ran.
+    EXPECT_EQ(std::get<std::string>(a.at("firmament.d3d11")), chosenD3D11Implementation());
     EXPECT_EQ(std::get<glm::ivec2>(a.at("firmament.resolution")), glm::ivec2(320, 200));
     EXPECT_EQ(std::get<int>(a.at("firmament.frame")), 4);
     // The tone mapping records what it applied.

@@ -22,6 +22,7 @@ set(expected
     "firmament.directionToSun (type v3f)"
     "firmament.settings (type string)"
     "firmament.adapter (type string)"
+    "firmament.d3d11 (type string)"
     "firmament.frame (type int)")
 foreach(line IN LISTS expected)
     string(FIND "${header}" "${line}" at)

@@ -132,10 +132,12 @@ TEST(BenchmarkReport, RatiosDivideTheNumeratorsMediansByTheDenominators) {
         EXPECT_DOUBLE_EQ(r.frame, 0.5);
         EXPECT_DOUBLE_EQ(r.passes, 0.5);
     }
-    const json report = benchmarkReport(p, results, {{"Yusov 2013", "abc", 2.0, 0.25}}, {"1.0", "adapter", "file.json"});
+    const json report = benchmarkReport(p, results, {{"Yusov 2013", "abc", 2.0, 0.25}}, {"1.0", "adapter", "dxvk", "file.json"});
     EXPECT_EQ(report["scenarios"].size(), 8u);
     EXPECT_EQ(report["ratios"][0]["paper"], 0.89);
     EXPECT_EQ(report["tables"][0]["computeSeconds"], 2.0);
+    EXPECT_EQ(report["firmament"]["implementation"], "dxvk");
+    EXPECT_EQ(report["firmament"]["adapter"], "adapter");
     const std::string table = benchmarkTable(p, results, {{"Yusov 2013", "abc", 2.0, 0.25}});
     EXPECT_NE(table.find("lut / int, high, 320x180: frame 0.500, passes 0.500 (paper, on its own device: 0.89)"), std::string::npos) << table;
     EXPECT_NE(table.find("Yusov 2013: computed in 2.00 s, loaded in 0.250 s"), std::string::npos) << table;
