@@ -17,7 +17,8 @@ die() { printf '[firmament] error: %s\n' "$*" >&2; exit 1; }
 # Direct3D 11 implementations"): wined3d, Wine's own over OpenGL on llvmpipe (the default), or
 # dxvk, DXVK over Vulkan on Mesa's lavapipe. tools/demo, tools/test and tools/bench take
 # --d3d11 NAME; tools/sandbox/wine-env picks the prefix and the DLLs by it.
-FIRMAMENT_D3D11=${FIRMAMENT_D3D11:-wined3d}
+# Exported: a tool another tool runs (tools/test runs tools/demo) keeps the choice.
+export FIRMAMENT_D3D11=${FIRMAMENT_D3D11:-wined3d}
 check_d3d11() {
     case "$FIRMAMENT_D3D11" in
         wined3d | dxvk) ;;
