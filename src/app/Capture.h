@@ -2,8 +2,8 @@
 // Captures of the final frame: the display image as PNG and the HDR frame as OpenEXR (half
 // float RGBA). The EXR header describes the frame: resolution, camera matrices, sun
 // direction, the settings as JSON, the adapter and the Direct3D 11 implementation, the program
-// version, and what the techniques
-// record of themselves (the exposure and operator of the tone mapping).
+// version, and what the techniques record of themselves (the exposure and operator of the tone
+// mapping).
 #include "core/Camera.h"
 #include "core/ExrImage.h"
 #include "gpu/Readback.h"

@@ -447,14 +447,17 @@ protected:
             const double length = occluded.queries[i].a.w;
             const glm::dvec2 shadow = shadowInterval(camera, v, length, toSun);
             const glm::dvec2 section = litSection(camera, v, length, toSun);
+            // T(0, s), blue.
+            const auto transmittance = [&](double s) {
+                return std::exp(-reference.opticalDepth(reference.netDensity(start, start + v * std::min(s, length))).b);
+            };
             // T(0, s) M(s) and its standard error, blue; M is zero at the ground.
             struct Weighted { double light, error; };
             unsigned seed = 7000u + static_cast<unsigned>(i) * 8u;
             const auto weighted = [&](double s) -> Weighted {
                 if (s >= length - 1e-3) return {0.0, 0.0};
-                const glm::dvec3 point = start + v * s;
-                const double t = std::exp(-reference.opticalDepth(reference.netDensity(start, point)).b);
-                const auto e = highOrders(reference, point, v, toSun, seed++);
+                const double t = transmittance(s);
+                const auto e = highOrders(reference, start + v * s, v, toSun, seed++);
                 return {t * e.mean.b, t * e.standardError.b};
             };
             const Weighted atCamera = weighted(0.0), shadowStart = shadow.x <= 0.0 ? atCamera : weighted(shadow.x), shadowEnd = weighted(shadow.y);
@@ -463,10 +466,7 @@ protected:
             const double lit = atCamera.light - shadowStart.light + shadowEnd.light;
             const double sectionLight = sectionStart.light - sectionEnd.light;
             const double approximation = std::abs(sectionLight - lit);
-            const auto lookedError = [&](const glm::vec4& looked, const Weighted& m, double s) {
-                const double t = std::exp(-reference.opticalDepth(reference.netDensity(start, start + v * std::min(s, length))).b);
-                return std::abs(t * looked.b - m.light);
-            };
+            const auto lookedError = [&](const glm::vec4& looked, const Weighted& m, double s) { return std::abs(transmittance(s) * looked.b - m.light); };
             const double table = lookedError(occluded.sectionStart[i], sectionStart, section.x) + lookedError(occluded.sectionEnd[i], sectionEnd, section.y);
             largestTableError = std::max(largestTableError, table / atCamera.light);
             const double noise = 4.0 * 2.0 * std::sqrt(atCamera.error * atCamera.error + shadowStart.error * shadowStart.error +
