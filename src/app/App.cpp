@@ -463,8 +463,9 @@ void App::captureFrame(const std::string& name) {
     ID3D11DeviceContext* context = gpu_->device.context();
     const FrameTargets& targets = gpu_->renderer.targets();
     CaptureDescription d;
-    d.view = state_.camera.view();
-    d.projection = state_.camera.projection(static_cast<float>(targets.width()) / static_cast<float>(targets.height()));
+    const Camera camera = gpu_->renderer.viewCamera(state_);
+    d.view = camera.view();
+    d.projection = camera.projection(static_cast<float>(targets.width()) / static_cast<float>(targets.height()));
     d.directionToSun = state_.sun.direction();
     d.settings = stateToJson(state_).dump(2);
     d.adapter = gpu_->device.describe();

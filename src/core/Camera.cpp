@@ -4,6 +4,7 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace firmament {
@@ -25,6 +26,12 @@ glm::mat4 Camera::projection(float aspectRatio) const {
     // Reversed Z: the planes swapped put depth 1 at the near plane and 0 at the far one, so that
     // float depth's precision, densest near 0, goes to the far distances.
     return glm::perspectiveLH_ZO(glm::radians(verticalFovDegrees), aspectRatio, farPlane, nearPlane);
+}
+
+Camera withFittedNearPlane(Camera camera, double highestSurface) {
+    const double clearance = static_cast<double>(camera.position.y) - highestSurface;
+    camera.nearPlane = std::max(camera.nearPlane, static_cast<float>(0.5 * clearance));
+    return camera;
 }
 
 void Camera::visit(SettingsVisitor& v) {

@@ -14,7 +14,7 @@ struct Camera {
     float yawDegrees = 0.0f;                  // 0 looks along +z, 90 along +x
     float pitchDegrees = 0.0f;                // positive looks up
     float verticalFovDegrees = 45.0f;         // as Yusov 2013's sample
-    float nearPlane = 1.0f;                   // metres
+    float nearPlane = 1.0f;                   // metres: the nearest a view's near plane comes (withFittedNearPlane)
     float farPlane = 1.0e7f;                  // metres: beyond the horizon from orbit
 
     static constexpr float kMaxPitchDegrees = 89.0f;  // keeps lookAt's up vector valid
@@ -36,6 +36,14 @@ struct Sun {
     glm::vec3 direction() const;
     void visit(SettingsVisitor& v);  // section "sun"
 };
+
+// The camera with its near plane at half its height above `highestSurface`, the highest point
+// anything drawn can reach (nothing is nearer), and never nearer than camera.nearPlane. Reversed
+// depth stores near / z, so from orbit a 1 m near plane would leave the whole Earth at depths under
+// 1e-5, where an implementation that maps depth through OpenGL's 2z - 1 (Wine's wined3d) keeps
+// only 6e-8 of absolute precision: the distances to the ground came out in visible steps
+// (docs/building.md, "Two Direct3D 11 implementations").
+Camera withFittedNearPlane(Camera camera, double highestSurface);
 
 glm::vec3 directionFromElevationAzimuth(float elevationRadians, float azimuthRadians);
 

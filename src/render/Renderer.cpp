@@ -60,9 +60,10 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
                       const std::function<void(ID3D11RenderTargetView*)>& drawGui) {
     if (!output) output = targets_.output().rtv.Get();
     profiler_.beginFrame();
-    const gpu::FrameConstants constants = frameConstants(state, time);
+    const Camera camera = viewCamera(state);
+    const gpu::FrameConstants constants = frameConstants(state, camera, time);
     frameConstants_.update(context_, constants);
-    FrameContext frame{device_, context_, shaders_, profiler_, targets_, frameConstants_.get(), constants, state.camera, state.sun,
+    FrameContext frame{device_, context_, shaders_, profiler_, targets_, frameConstants_.get(), constants, camera, state.sun,
                        time.seconds, time.deltaSeconds, finishWorkNow};
     {
         auto pass = profiler_.scope("Clear frame targets");
@@ -129,6 +130,8 @@ void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) 
     const double reach = std::min((terrain.maxAltitude() - terrain.minAltitude() + 1000.0) / std::max(toSun.y, 0.02), 2.0e5);
     // The light shafts' march starts at the camera: their first marched cascade holds it.
     const int aroundCamera = lightShaftsDrawn(state) ? state.lightShafts.firstCascade : -1;
+    // The cascades split the view from state.camera's own near plane (1 m), not the fitted one: from
+    // high up their reach ends before the fitted plane, and nothing there casts into the view.
     shadows_->update(frame.context, state.camera, static_cast<double>(frame.width()) / frame.height(), toSun, state.shadows, reach, aroundCamera);
     if (!shadows_->cascades().empty()) {
         auto pass = profiler_.scope("Shadow cascades");
@@ -139,22 +142,29 @@ void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) 
         terrain.render(frame, lighting, shadows_->inputs(), clouds_->shadows(), state.terrain);
 }
 
-gpu::FrameConstants Renderer::frameConstants(const State& state, FrameTime time) const {
+Camera Renderer::viewCamera(const State& state) {
+    double highest = 0.0;  // the orientation grid's ground
+    if (state.terrain.enabled) highest = std::max(highest, terrain().maxAltitude());
+    if (state.clouds.enabled) highest = std::max(highest, static_cast<double>(state.clouds.altitude + state.clouds.thickness));
+    return withFittedNearPlane(state.camera, highest);
+}
+
+gpu::FrameConstants Renderer::frameConstants(const State& state, const Camera& camera, FrameTime time) const {
     const float width = static_cast<float>(targets_.width()), height = static_cast<float>(targets_.height());
-    const glm::mat4 projection = state.camera.projection(width / height);
-    const glm::mat4 viewProjection = projection * state.camera.view();
-    glm::mat4 rotationOnly = state.camera.view();
+    const glm::mat4 projection = camera.projection(width / height);
+    const glm::mat4 viewProjection = projection * camera.view();
+    glm::mat4 rotationOnly = camera.view();
     rotationOnly[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     gpu::FrameConstants c{};
     c.viewProjection = viewProjection;
     c.inverseViewProjection = glm::inverse(viewProjection);
     c.clipToDirection = glm::inverse(projection * rotationOnly);
-    c.cameraPosition = glm::vec4(state.camera.position, state.camera.position.y);
+    c.cameraPosition = glm::vec4(camera.position, camera.position.y);
     c.directionToSun = glm::vec4(state.sun.direction(), 0.0f);
     c.screen = glm::vec4(width, height, 1.0f / width, 1.0f / height);
     c.time = glm::vec4(static_cast<float>(time.seconds), 0.0f, 0.0f, 0.0f);
     c.sunIrradiance = glm::vec4(glm::vec3(state.atmosphere.sunIntensity), 0.0f);
-    const ClipmapExtent terrain = clipmapExtent(glm::dvec2(state.camera.position.x, state.camera.position.z));
+    const ClipmapExtent terrain = clipmapExtent(glm::dvec2(camera.position.x, camera.position.z));
     c.planet = glm::vec4(static_cast<float>(AtmosphereParameters{}.earthRadius), state.terrain.enabled ? static_cast<float>(terrain.halfWidth) : 0.0f,
                          static_cast<float>(terrain.centre.x), static_cast<float>(terrain.centre.y));
     return c;

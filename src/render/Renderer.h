@@ -4,6 +4,7 @@
 // (README, "Architecture"). The application drives it once a frame with the state to draw; the
 // techniques stay behind this header, so that adding one touches its own folder, its settings,
 // its panel file, and one line of the frame order.
+#include "core/Camera.h"
 #include "core/ExrImage.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/GpuProfiler.h"
@@ -74,6 +75,10 @@ public:
     void render(const State& state, FrameTime time, bool finishWorkNow, ID3D11RenderTargetView* output,
                 const std::function<void(ID3D11RenderTargetView*)>& drawGui);
 
+    // The camera a frame of `state` is drawn from: state.camera with its near plane fitted below
+    // the highest surface drawn, the terrain's peaks and the clouds' layer (withFittedNearPlane).
+    // Captures record its projection.
+    Camera viewCamera(const State& state);
     // World y of the terrain's surface at (x, z), for the camera's clearance (the height field
     // is loaded, or generated, on the first call that needs it).
     double groundY(double x, double z);
@@ -93,7 +98,7 @@ public:
     GpuProfiler& profiler() { return profiler_; }
 
 private:
-    gpu::FrameConstants frameConstants(const State& state, FrameTime time) const;
+    gpu::FrameConstants frameConstants(const State& state, const Camera& camera, FrameTime time) const;
     void renderShadowsAndTerrain(FrameContext& frame, const State& state);
     // The terrain, made from the height field the first time it is needed: a run with the
     // terrain off never reads the 16 MiB field.

@@ -5,7 +5,11 @@
 // names them. With FIRMAMENT_UPDATE_GOLDENS=1 the captures are written to
 // test-output/golden/update/ instead of compared; tools/update-goldens copies them into
 // tests/golden/ (docs/building.md, "Golden images").
+// A view whose picture legitimately differs on one Direct3D 11 implementation names it, and why,
+// in its "implementations" object; that implementation's image is tests/golden/<id>/<name>.png
+// (docs/building.md, "Two Direct3D 11 implementations").
 #include "core/PngImage.h"
+#include "gpu/D3D11Implementation.h"
 #include "support/ImageComparison.h"
 #include "support/HeadlessCapture.h"
 #include "support/TestPaths.h"
@@ -42,6 +46,14 @@ std::vector<std::string> viewNames() {
     return names;
 }
 
+// The golden image of `view` on the implementation the tests run on, relative to the golden
+// folder: its own image where the view declares one.
+std::filesystem::path goldenImage(const nlohmann::json& view) {
+    const std::string name = view["name"].get<std::string>() + ".png", implementation = chosenD3D11Implementation();
+    if (view.contains("implementations") && view["implementations"].contains(implementation)) return std::filesystem::path(implementation) / name;
+    return name;
+}
+
 bool updating() {
     const char* value = std::getenv("FIRMAMENT_UPDATE_GOLDENS");
     return value && std::string(value) == "1";
@@ -60,6 +72,26 @@ TEST(GoldenImages, ViewsFileListsAtLeastEightNamedViews) {
         const std::string name = view["name"];
         EXPECT_EQ(std::find(seen.begin(), seen.end(), name), seen.end()) << "two views are named " << name;
         seen.push_back(name);
+        // Each implementation's own image is declared with its reason, and exists.
+        if (!view.contains("implementations")) continue;
+        ASSERT_TRUE(view["implementations"].is_object()) << name << ": \"implementations\" maps an implementation to why its image differs";
+        for (const auto& [implementation, why] : view["implementations"].items()) {
+            EXPECT_TRUE(why.is_string() && !why.get<std::string>().empty()) << name << ": say why " << implementation << " has an image of its own";
+            EXPECT_TRUE(std::filesystem::exists(goldenFolder() / implementation / (name + ".png"))) << name << " declares an image for " << implementation;
+        }
+    }
+    // And no image stands in an implementation's folder that no view declares.
+    for (const D3D11Implementation id : {D3D11Implementation::Windows, D3D11Implementation::Wined3d, D3D11Implementation::Dxvk}) {
+        const std::string implementation = implementationId(id);
+        const std::filesystem::path folder = goldenFolder() / implementation;
+        if (!std::filesystem::is_directory(folder)) continue;
+        for (const auto& image : std::filesystem::directory_iterator(folder)) {
+            const std::string name = image.path().stem().string();
+            bool declared = false;
+            for (const auto& view : views["views"])
+                if (view["name"] == name && view.contains("implementations") && view["implementations"].contains(implementation)) declared = true;
+            EXPECT_TRUE(declared) << image.path().string() << " is no view's image for " << implementation;
+        }
     }
 }
 
@@ -82,13 +114,14 @@ TEST_P(GoldenImage, MatchesTheCommittedImage) {
     const Rgba8Image captured = readPng(scratch / "capture.png");
     std::filesystem::remove_all(scratch);
 
+    const std::filesystem::path image = goldenImage(*view);
     if (updating()) {
-        std::filesystem::create_directories(outputFolder() / "update");
-        writePng(outputFolder() / "update" / (name + ".png"), captured);
-        std::printf("updated: %s\n", (outputFolder() / "update" / (name + ".png")).string().c_str());
+        std::filesystem::create_directories((outputFolder() / "update" / image).parent_path());
+        writePng(outputFolder() / "update" / image, captured);
+        std::printf("updated: %s\n", (outputFolder() / "update" / image).string().c_str());
         return;
     }
-    const auto goldenPath = goldenFolder() / (name + ".png");
+    const auto goldenPath = goldenFolder() / image;
     ASSERT_TRUE(std::filesystem::exists(goldenPath)) << "no golden image " << goldenPath.string()
                                                      << ": run tools/update-goldens and review the new image (docs/building.md, \"Golden images\")";
     const Rgba8Image golden = readPng(goldenPath);

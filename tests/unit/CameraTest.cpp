@@ -27,6 +27,27 @@ TEST(Camera, NearAndFarPlanesMapToDepthOneAndZero) {
     EXPECT_NEAR(project(viewProjection, {0, 0, 50.0f}).z, 0.5f / 50.0f * (1000.0f - 50.0f) / (1000.0f - 0.5f), 1e-6f);
 }
 
+// The near plane fitted below the highest surface: 1 m on the ground, half the clearance above
+// it. From 400 km up, the horizon's ground (2300 km away) then lands at a depth of about 0.09,
+// where wined3d's constant 1.3e-8 of depth error (tests/gpu/DepthPrecisionTest.cpp) is a relative
+// 2e-7; with a 1 m plane it landed near 3e-7, and the error was 4%.
+TEST(Camera, NearPlaneFitsBelowTheHighestSurface) {
+    Camera camera;
+    camera.position = {0.0f, 2.0f, 0.0f};
+    EXPECT_EQ(withFittedNearPlane(camera, 5000.0).nearPlane, 1.0f);  // below the peaks: the camera's own plane
+    camera.position.y = 10000.0f;
+    EXPECT_EQ(withFittedNearPlane(camera, 5000.0).nearPlane, 2500.0f);
+    camera.position.y = 400000.0f;
+    camera.pitchDegrees = -20.0f;  // the horizon, seen from 400 km, is 20 degrees below level
+    const Camera fitted = withFittedNearPlane(camera, 5000.0);
+    EXPECT_EQ(fitted.nearPlane, 197500.0f);
+    const glm::vec3 horizon = camera.position + 2.3e6f * camera.forward();
+    const float depth = project(fitted.projection(16.0f / 9.0f) * fitted.view(), horizon).z;
+    EXPECT_NEAR(depth, 197500.0 / 2.3e6 * (1e7 - 2.3e6) / (1e7 - 197500.0), 1e-5);  // n / z (f - z) / (f - n)
+    EXPECT_LT(1.3e-8 / depth, 2e-7);
+    EXPECT_LT(project(camera.projection(16.0f / 9.0f) * camera.view(), horizon).z, 1e-6f);  // the 1 m plane's depth there
+}
+
 TEST(Camera, VerticalFieldOfViewReachesTheTopEdge) {
     Camera camera;
     camera.position = {0.0f, 0.0f, 0.0f};
