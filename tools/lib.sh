@@ -18,7 +18,13 @@ die() { printf '[firmament] error: %s\n' "$*" >&2; exit 1; }
 # dxvk, DXVK over Vulkan on Mesa's lavapipe. tools/demo, tools/test and tools/bench take
 # --d3d11 NAME; tools/sandbox/wine-env picks the prefix and the DLLs by it.
 # Exported: a tool another tool runs (tools/test runs tools/demo) keeps the choice.
+# FIRMAMENT_D3D11_GIVEN: 1 when the caller chose (the variable set, or --d3d11 given).
+FIRMAMENT_D3D11_GIVEN=${FIRMAMENT_D3D11:+1}
 export FIRMAMENT_D3D11=${FIRMAMENT_D3D11:-wined3d}
+# The Vulkan driver DXVK gets: lavapipe (empty, the default), or "host", the host's GPU through
+# Mesa's hardware drivers (radv for AMD, anv and hasvk for Intel, nvk for NVIDIA), with the GPU's
+# device nodes bound into the sandbox. tools/demo sets it for --hardware or --adapter under DXVK.
+FIRMAMENT_VULKAN=${FIRMAMENT_VULKAN:-}
 check_d3d11() {
     case "$FIRMAMENT_D3D11" in
         wined3d | dxvk) ;;
@@ -34,9 +40,10 @@ take_d3d11_option() {
             --d3d11)
                 [ "$#" -ge 2 ] || die "--d3d11 needs a name: wined3d or dxvk"
                 FIRMAMENT_D3D11=$2
+                FIRMAMENT_D3D11_GIVEN=1
                 shift 2
                 ;;
-            --d3d11=*) FIRMAMENT_D3D11=${1#--d3d11=}; shift ;;
+            --d3d11=*) FIRMAMENT_D3D11=${1#--d3d11=}; FIRMAMENT_D3D11_GIVEN=1; shift ;;
             *) ARGUMENTS+=("$1"); shift ;;
         esac
     done
@@ -118,6 +125,10 @@ in_sysroot() {
     # Host folders and files a command names outside the checkout (tools/demo's path arguments),
     # bound at their own paths.
     args+=(${FIRMAMENT_EXTRA_BINDS[@]+"${FIRMAMENT_EXTRA_BINDS[@]}"})
+    # The host's GPU: its render nodes, and /sys, where Mesa's drivers read the devices' PCI ids.
+    if [ "$FIRMAMENT_VULKAN" = host ]; then
+        args+=(--dev-bind /dev/dri /dev/dri --ro-bind /sys /sys --setenv FIRMAMENT_VULKAN host)
+    fi
     if [ "$pass_display" = 1 ] && [ -n "${DISPLAY:-}" ]; then
         args+=(--bind /tmp/.X11-unix /tmp/.X11-unix --setenv DISPLAY "$DISPLAY")
         if [ -n "${XAUTHORITY:-}" ] && [ -f "$XAUTHORITY" ]; then

@@ -95,6 +95,10 @@ std::vector<std::pair<std::string, double>> Clouds::counts(ID3D11Device* device,
                                                        {"cloud particles", kept},
                                                        {"cloud particles over capacity", std::max(generated - capacity, 0.0)},
                                                        {"cloud particles drawn", drawn}};
+    // Which volume-aware path ran (1: rasterizer-ordered views, 0: the lists or alpha), and what
+    // its resources hold.
+    result.emplace_back("cloud blending through rasterizer-ordered views", blending_.path() == ParticleBlending::RasterizerOrdered ? 1.0 : 0.0);
+    result.emplace_back("cloud blending memory (MiB)", static_cast<double>(blending_.memoryBytes()) / (1024.0 * 1024.0));
     if (blending_.path() == ParticleBlending::PerPixelLists) {
         const VolumeBlendingPass::Overflow o = blending_.readOverflow(device, context);
         result.emplace_back("cloud fragments", static_cast<double>(o.nodesAskedFor));

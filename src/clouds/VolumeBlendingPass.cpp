@@ -120,4 +120,14 @@ std::optional<VolumeBlendingPass::Overflow> VolumeBlendingPass::latestOverflow()
     return Overflow{c->asked, c->dropped, c->second};
 }
 
+size_t VolumeBlendingPass::memoryBytes() const {
+    const size_t pixels = static_cast<size_t>(width_) * static_cast<size_t>(height_);
+    switch (path_) {
+        case ParticleBlending::PerPixelLists: return lists_.bytes();
+        case ParticleBlending::RasterizerOrdered: return pixels * (16 + 8);
+        case ParticleBlending::Alpha: break;
+    }
+    return 0;
+}
+
 }  // namespace firmament

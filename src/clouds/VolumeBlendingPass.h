@@ -59,6 +59,9 @@ public:
 
     ParticleBlending path() const { return path_; }
     unsigned nodeCapacity() const { return path_ == ParticleBlending::PerPixelLists ? lists_.capacity() : 0u; }
+    // The GPU memory the path holds: the lists' heads and pool, or the ordered path's RGBA32F and
+    // RG32F per-pixel stores (Alpha: none).
+    size_t memoryBytes() const;
 
     // What did not fit: nodes asked of the pool past its capacity, fragments past one pixel's
     // resolve limit (kMaxPixelFragments in fragment_lists.hlsli).

@@ -48,6 +48,10 @@ public:
     std::optional<Counts> latest() const { return latest_; }
 
     unsigned capacity() const { return capacity_; }
+    // What the lists hold on the GPU: the head texture (its counters' row included) and the pool.
+    size_t bytes() const {
+        return size_t{4} * static_cast<size_t>(heads_.width) * static_cast<size_t>(heads_.height) + size_t{stride_} * capacity_;
+    }
     const Texture2D& heads() const { return heads_; }
     const StructuredBuffer& nodes() const { return nodes_; }
 

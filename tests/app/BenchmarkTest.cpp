@@ -85,10 +85,17 @@ TEST(Benchmark, WritesCompleteWellFormedJsonAndPrintsTheTable) {
         EXPECT_EQ(s["counts"]["cloud particles over capacity"].get<double>(), 0.0) << name;
         // Volume-aware blending by default: through the per-pixel lists under wined3d, their
         // fragments counted; DXVK has rasterizer-ordered views, whose path keeps no lists.
-        if (chosenD3D11Implementation() == "dxvk")
+        // The path is counted, and its memory: the ordered path's two stores of 24 bytes a
+        // low-resolution pixel (Downscale 2x of 96x54), or the lists' heads and pool.
+        const bool ordered = chosenD3D11Implementation() == "dxvk";
+        EXPECT_EQ(s["counts"]["cloud blending through rasterizer-ordered views"], ordered ? 1.0 : 0.0) << name;
+        if (ordered) {
             EXPECT_FALSE(s["counts"].contains("cloud fragments")) << name;
-        else
+            EXPECT_NEAR(s["counts"]["cloud blending memory (MiB)"].get<double>(), 48.0 * 27.0 * 24.0 / (1024.0 * 1024.0), 1e-9) << name;
+        } else {
             EXPECT_GT(s["counts"]["cloud fragments"].get<double>(), 0.0) << name;
+            EXPECT_GT(s["counts"]["cloud blending memory (MiB)"].get<double>(), 48.0 * 27.0 * 4.0 / (1024.0 * 1024.0)) << name;
+        }
         // Light occlusion: the particles tiled from the sun.
         EXPECT_GE(s["counts"]["cloud light-space tile nodes"].get<double>(), s["counts"]["cloud particles"].get<double>()) << name;
     }
