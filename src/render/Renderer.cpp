@@ -145,7 +145,8 @@ void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) 
 Camera Renderer::viewCamera(const State& state) {
     double highest = 0.0;  // the orientation grid's ground
     if (state.terrain.enabled) highest = std::max(highest, terrain().maxAltitude());
-    if (state.clouds.enabled) highest = std::max(highest, static_cast<double>(state.clouds.altitude + state.clouds.thickness));
+    if (state.clouds.enabled || state.clouds.showParticles != ParticleView::Off)  // the particles, shaded or shown
+        highest = std::max(highest, static_cast<double>(state.clouds.altitude + state.clouds.thickness));
     return withFittedNearPlane(state.camera, highest);
 }
 
