@@ -72,6 +72,10 @@ target_link_libraries(firmament_portable PUBLIC glm::glm nlohmann_json::nlohmann
 target_compile_options(firmament_portable PUBLIC ${sanitize_flags})
 target_link_options(firmament_portable PUBLIC ${sanitize_flags})
 firmament_warnings(firmament_portable)
+# The same layer check as the Windows build's (cmake/FirmamentLayers.cmake) before it compiles.
+include(FirmamentLayers)
+firmament_check_layers(firmament_layers)
+add_dependencies(firmament_portable firmament_layers)
 
 include(CTest)
 include(GoogleTest)
@@ -118,6 +122,16 @@ add_custom_command(TARGET firmament_portable_tests POST_BUILD
 include(${CMAKE_CURRENT_LIST_DIR}/FirmamentTestGroups.cmake)
 firmament_test_groups(firmament_portable_tests SHARDS 2 TIMEOUT 600
     FULL_TIER CloudScatteringFile ParticleScattering.TheOrdersMatchAMonteCarloRandomWalkThroughTheSameSphere)
+
+# The rooms of src/ (cmake/FirmamentLayers.cmake): the tree's includes all run down them, and
+# the check fails on an include up or across them. Checked here, natively, and by every build.
+foreach(case IN ITEMS tree upward across new-room)
+    set(scratch ${CMAKE_CURRENT_BINARY_DIR}/layers-${case})
+    file(MAKE_DIRECTORY ${scratch})
+    add_test(NAME Layers.${case} COMMAND ${CMAKE_COMMAND} -DPROJECT_DIR=${PROJECT_SOURCE_DIR} -DSCRATCH=${scratch} -DCASE=${case}
+        -P ${tests}/layers/LayersTest.cmake)
+    set_tests_properties(Layers.${case} PROPERTIES LABELS quick TIMEOUT 120)
+endforeach()
 
 if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     include(${tests}/fuzz/FuzzTargets.cmake)

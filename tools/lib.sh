@@ -2,7 +2,7 @@
 #
 # Everything Firmament needs on Linux lives in one Debian sid sysroot inside a cache folder
 # outside the checkout. Commands run inside it through bubblewrap, so nothing stays mounted
-# or running after they end (see ../shared/design/platform.md).
+# or running after they end (docs/building.md, "The sysroot").
 
 set -euo pipefail
 

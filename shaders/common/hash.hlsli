@@ -1,6 +1,6 @@
 #ifndef FIRMAMENT_HASH_HLSLI
 #define FIRMAMENT_HASH_HLSLI
-// Wellons' lowbias32 integer hash (src/terrain/IntegerHash.h, the CPU twin): every input bit
+// Wellons' lowbias32 integer hash (src/core/IntegerHash.h, the CPU twin): every input bit
 // changes about half the output bits. The clouds' noises and particles pick their values with it.
 uint hash32(uint x) {
     x ^= x >> 16;

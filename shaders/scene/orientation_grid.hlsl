@@ -1,7 +1,7 @@
-// Orientation grid: until the sky and the terrain exist, something to fly over. A flat
-// ground plane (y = 0) with grid lines every 100 m, 1 km and 10 km, lit by the sun with a
-// Lambert term, under a two-colour sky gradient with a sun disc. Not a physical model: the
-// atmosphere and terrain passes replace it (Basic panel, "Orientation grid").
+// Orientation grid: a reference ground to read distances and the sun's direction from, under
+// the terrain or alone. A flat ground plane (y = 0) with grid lines every 100 m, 1 km and
+// 10 km, lit by the sun with a Lambert term, under a two-colour sky gradient with a sun disc.
+// Not a physical model (Basic panel, "Orientation grid").
 // GROUND_ONLY=1 (light scattering on): only the ground, now the Earth's sphere (so that it
 // meets the spherical atmosphere, and curves away seen from orbit), beyond the terrain's reach
 // when the terrain draws, lit by the sun's

@@ -1,7 +1,7 @@
 #ifndef FIRMAMENT_SHADOW_STRUCTURES_HLSLI
 #define FIRMAMENT_SHADOW_STRUCTURES_HLSLI
 // The shadow cascades' constant-buffer structures, one definition read by HLSL and C++
-// (src/shadows/ShadowStructures.h), under the rules of common/shared_structures.hlsli.
+// (src/frame/ShadowStructures.h), under the rules of common/shared_structures.hlsli.
 #include "common/shared_structures.hlsli"
 
 // shadows/*: the cascaded shadow maps (src/shadows/CascadedShadowMaps.h), for the passes that

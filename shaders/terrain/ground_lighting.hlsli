@@ -9,7 +9,7 @@
 //   GROUND_LIGHTING=1  Yusov 2013: the net density table and the ambient sky light table;
 //   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table.
 // (A comparison of the two models draws the ground once per model, each clipped to its side of
-// the frame: src/atmosphere/GroundLighting.h.)
+// the frame: src/frame/GroundLighting.h.)
 // Callers declare cbuffers `atmosphere` (AtmosphereConstants) and, for 2, `bruneton`, the
 // tables `sunTransmittanceTable` and `skyIrradianceTable`, and the sampler `linearClamp`.
 #include "atmosphere/yusov/lookup.hlsli"

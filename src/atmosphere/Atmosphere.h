@@ -12,13 +12,13 @@
 //    Yusov's tables for a technique that looks them up itself (ScatteringLookup).
 // The model comparison stays inside: the ground sees only the regions it is given.
 #include "atmosphere/AtmosphereSettings.h"
-#include "atmosphere/BrunetonLookup.h"
-#include "atmosphere/GroundLighting.h"
-#include "atmosphere/ScatteringLookup.h"
 #include "atmosphere/bruneton/BrunetonPass.h"
 #include "atmosphere/yusov/YusovPass.h"
 #include "core/ExrImage.h"
-#include "render/FrameContext.h"
+#include "frame/BrunetonLookup.h"
+#include "frame/FrameContext.h"
+#include "frame/GroundLighting.h"
+#include "frame/ScatteringLookup.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
 

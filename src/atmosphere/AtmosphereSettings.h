@@ -3,6 +3,7 @@
 // (Yusov 2013's Additional panel: aerosol density and absorption, custom scattering colours)
 // and the pre-computation's resolution. Changing any of them recomputes the look-up tables.
 #include "core/Settings.h"
+#include "frame/ScatteringModes.h"
 
 #include <glm/vec3.hpp>
 
@@ -20,15 +21,6 @@ inline constexpr std::array<std::string_view, 2> kAtmosphereModelNames{"Yusov 20
 // absolute difference of their radiance (Difference), which tone mapping then shows.
 enum class ModelComparison { None, Split, Difference };
 inline constexpr std::array<std::string_view, 3> kModelComparisonNames{"None", "Split", "Difference"};
-// Where single scattering comes from at render time (Yusov 2013's Additional panel); the
-// order is the shader's mode index (shaders/atmosphere/yusov/render.hlsl).
-enum class SingleScatteringMode { None, Integration, Table };
-inline constexpr std::array<std::string_view, 3> kSingleScatteringModeNames{"None", "Integration", "LUT"};
-// Higher orders (Yusov 2013, "Occluded vs unoccluded"): none; occluded, the multiple
-// scattering table alone (single scattering from it too); unoccluded, single scattering as
-// its mode says plus the high-order table.
-enum class MultipleScatteringMode { None, Occluded, Unoccluded };
-inline constexpr std::array<std::string_view, 3> kMultipleScatteringModeNames{"None", "Occluded", "Unoccluded"};
 inline constexpr std::array<std::string_view, 3> kLutResolutionNames{"Small (8x32x16x8)", "Medium (16x64x32x8)",
                                                                      "Full (32x128x64x16)"};
 

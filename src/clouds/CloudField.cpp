@@ -1,7 +1,7 @@
 #include "clouds/CloudField.h"
 
 #include "clouds/CloudSettings.h"
-#include "terrain/IntegerHash.h"
+#include "core/IntegerHash.h"
 
 #include <glm/geometric.hpp>
 

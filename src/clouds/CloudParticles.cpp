@@ -3,8 +3,8 @@
 #include "clouds/CloudField.h"
 #include "clouds/CloudGrid.h"
 #include "core/Camera.h"
+#include "frame/FrameContext.h"
 #include "gpu/CommonStates.h"
-#include "render/FrameContext.h"
 #include "tables/StagedComputation.h"
 
 #include <vector>

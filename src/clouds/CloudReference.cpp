@@ -1,8 +1,8 @@
 #include "clouds/CloudReference.h"
 
 #include "clouds/CloudParticles.h"
+#include "frame/FrameContext.h"
 #include "gpu/CommonStates.h"
-#include "render/FrameContext.h"
 #include "tables/StagedComputation.h"
 
 #include <algorithm>

@@ -3,10 +3,9 @@
 #include "clouds/CloudParticles.h"
 #include "clouds/LightSpace.h"
 #include "clouds/ParticleTables.h"
+#include "frame/FrameContext.h"
 #include "gpu/CommonStates.h"
 #include "gpu/Hresult.h"
-#include "render/FrameContext.h"
-#include "shadows/CascadedShadowMaps.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -108,22 +107,17 @@ void CloudShadowMap::render(FrameContext& frame, CloudParticles& particles, cons
     context->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
 }
 
-void CloudShadowMap::mergeInto(FrameContext& frame, CascadedShadowMaps& shadows) {
-    if (!active() || shadows.cascades().empty()) return;
+void CloudShadowMap::drawIntoCascade(FrameContext& frame, const glm::dmat4& cascadeWorldToClip) {
     ID3D11DeviceContext* context = frame.context;
-    auto pass = frame.profiler.scope("Clouds: shadows into the cascades");
-    shadows.addCasters(context, [&](ID3D11Buffer*, size_t cascade) {
-        const glm::dmat4& worldToClip = shadows.cascades()[cascade].worldToClip;
-        mergeBuffer_.update(context, gpu::CloudShadowMergeConstants{glm::mat4(glm::inverse(worldToClip)), glm::mat4(worldToClip)});
-        ID3D11Buffer* buffers[] = {constantsBuffer_.get(), mergeBuffer_.get()};
-        context->PSSetConstantBuffers(0, 2, buffers);
-        context->PSSetShaderResources(0, 1, srv_.GetAddressOf());
-        context->IASetInputLayout(nullptr);
-        context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-        context->VSSetShader(frame.shaders.vertexShader(kMergeVertexShader), nullptr, 0);
-        context->PSSetShader(frame.shaders.pixelShader(kMergePixelShader), nullptr, 0);
-        context->Draw(3, 0);
-    });
+    mergeBuffer_.update(context, gpu::CloudShadowMergeConstants{glm::mat4(glm::inverse(cascadeWorldToClip)), glm::mat4(cascadeWorldToClip)});
+    ID3D11Buffer* buffers[] = {constantsBuffer_.get(), mergeBuffer_.get()};
+    context->PSSetConstantBuffers(0, 2, buffers);
+    context->PSSetShaderResources(0, 1, srv_.GetAddressOf());
+    context->IASetInputLayout(nullptr);
+    context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    context->VSSetShader(frame.shaders.vertexShader(kMergeVertexShader), nullptr, 0);
+    context->PSSetShader(frame.shaders.pixelShader(kMergePixelShader), nullptr, 0);
+    context->Draw(3, 0);
     ID3D11ShaderResourceView* none = nullptr;
     context->PSSetShaderResources(0, 1, &none);
 }

@@ -5,13 +5,13 @@
 // orthographic squares centred over the camera: a near map of fine texels for the shadows around
 // it, and a far one over the whole particle field, two slices of one texture array. The terrain
 // and the light shafts read them (shadows/cloud_shadow.hlsli); for "Shafts from clouds: shadow
-// map" they are drawn into the shadow cascades as casters instead (mergeInto).
+// map" they are drawn into the shadow cascades as casters instead (drawIntoCascade).
 #include "clouds/CloudSettings.h"
 #include "clouds/CloudStructures.h"
+#include "frame/CloudShadowInputs.h"
+#include "frame/ShadowStructures.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/Texture.h"
-#include "shadows/CloudShadowInputs.h"
-#include "shadows/ShadowStructures.h"
 
 #include <glm/vec3.hpp>
 
@@ -19,7 +19,6 @@
 
 namespace firmament {
 
-class CascadedShadowMaps;
 class CloudParticles;
 struct FrameContext;
 struct ParticleTables;
@@ -55,8 +54,9 @@ public:
     ID3D11ShaderResourceView* mapView() const { return srv_.Get(); }  // Texture2DArray: slice 0 near, 1 far
 
     // "Shafts from clouds: shadow map": where the clouds let through less than half of the sun's
-    // light, the middle of their stretch drawn into each of `shadows`' cascades drawn this frame.
-    void mergeInto(FrameContext& frame, CascadedShadowMaps& shadows);
+    // light, the middle of their stretch drawn as a caster into the shadow cascade bound for
+    // depth, whose projection is `cascadeWorldToClip` (the renderer calls it once per cascade).
+    void drawIntoCascade(FrameContext& frame, const glm::dmat4& cascadeWorldToClip);
 
 private:
     ConstantBuffer<gpu::CloudShadowConstants> constantsBuffer_;

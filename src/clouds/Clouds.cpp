@@ -1,9 +1,9 @@
 #include "clouds/Clouds.h"
 
 #include "core/Log.h"
+#include "frame/FrameContext.h"
 #include "gpu/CommonStates.h"
 #include "gpu/Readback.h"
-#include "render/FrameContext.h"
 #include "tables/TimeTables.h"
 
 #include <algorithm>
@@ -65,11 +65,6 @@ void Clouds::updateTables(FrameContext& frame, const CloudSettings& settings, bo
     const ParticleTableParameters wanted = tableParameters(settings);
     tables_.update(frame.device, frame.context, frame.shaders, frame.profiler, storage_, particleTableKey(wanted, frame.shaders),
                    [&] { return std::make_unique<ParticleTablePrecomputation>(frame.device, wanted); }, finishNow);
-}
-
-const ParticleTablePrecomputation& Clouds::tables(FrameContext& frame, const CloudSettings& settings) {
-    updateTables(frame, settings, true);
-    return *tables_.current();
 }
 
 TableTiming Clouds::timeTables(ID3D11Device* device, ID3D11DeviceContext* context, ShaderLibrary& shaders, const CloudSettings& settings,

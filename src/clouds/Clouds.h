@@ -3,15 +3,15 @@
 // the particles generated and sorted on the GPU each frame, with the views of them that
 // "Show particles" selects. The renderer's one entry point for the clouds.
 #include "clouds/CloudParticles.h"
-#include "atmosphere/BrunetonLookup.h"
-#include "atmosphere/ScatteringLookup.h"
-#include "clouds/ParticleScattering.h"
-#include "clouds/ParticleTables.h"
-#include "clouds/LowResolution.h"
 #include "clouds/CloudReference.h"
 #include "clouds/CloudShadowMap.h"
+#include "clouds/LowResolution.h"
 #include "clouds/ParticleOpacity.h"
+#include "clouds/ParticleScattering.h"
+#include "clouds/ParticleTables.h"
 #include "clouds/VolumeBlendingPass.h"
+#include "frame/BrunetonLookup.h"
+#include "frame/ScatteringLookup.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
 
@@ -19,7 +19,6 @@
 
 namespace firmament {
 
-class CascadedShadowMaps;
 struct FrameContext;
 
 class Clouds {
@@ -37,8 +36,7 @@ public:
     // clouds, whatever the atmosphere: the particles cast shadows even where they are not lit).
     CloudShadowInputs shadows() const { return shadowMap_.inputs(); }
     const CloudShadowMap& shadowMap() const { return shadowMap_; }
-    // "Shafts from clouds: shadow map": the clouds drawn into the shadow cascades as casters.
-    void mergeShadowsInto(FrameContext& frame, CascadedShadowMaps& cascades) { shadowMap_.mergeInto(frame, cascades); }
+    CloudShadowMap& shadowMap() { return shadowMap_; }
     // The atmosphere model the clouds are lit through: Yusov 2013's tables or Bruneton's (one of
     // them, the model drawn alone; none in a comparison of the two).
     struct AtmosphereTables {
@@ -51,8 +49,6 @@ public:
     // cannot be.
     void renderTranslucent(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere);
 
-    // The particle tables for `settings`, computed or loaded now (tests, benchmarks).
-    const ParticleTablePrecomputation& tables(FrameContext& frame, const CloudSettings& settings);
     CloudParticles& particles() { return particles_; }
     const CloudReference& reference() const { return reference_; }
     const ParticleOpacity& opacity() const { return opacity_; }

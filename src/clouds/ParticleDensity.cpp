@@ -1,6 +1,6 @@
 #include "clouds/ParticleDensity.h"
 
-#include "terrain/IntegerHash.h"
+#include "core/IntegerHash.h"
 
 #include <glm/geometric.hpp>
 

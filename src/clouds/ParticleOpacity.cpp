@@ -3,8 +3,8 @@
 #include "clouds/CloudParticles.h"
 #include "clouds/LightSpace.h"
 #include "clouds/ParticleTables.h"
+#include "frame/FrameContext.h"
 #include "gpu/CommonStates.h"
-#include "render/FrameContext.h"
 #include "tables/StagedComputation.h"
 
 #include <algorithm>

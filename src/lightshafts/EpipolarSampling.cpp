@@ -2,7 +2,6 @@
 
 #include "core/Camera.h"
 #include "gpu/Hresult.h"
-#include "shadows/ShadowSettings.h"
 #include "tables/StagedComputation.h"
 
 #include <glm/geometric.hpp>

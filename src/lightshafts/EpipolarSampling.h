@@ -10,18 +10,18 @@
 //   "show sampling".
 // The technique owns its epipolar-space textures and its two work lists; the shaders are in
 // shaders/lightshafts/ (the passes' files are named after them).
-#include "atmosphere/ScatteringLookup.h"
+#include "frame/CloudShadowInputs.h"
+#include "frame/FrameContext.h"
+#include "frame/ScatteringLookup.h"
+#include "frame/ShadowInputs.h"
+#include "frame/ShadowStructures.h"
+#include "gpu/Buffers.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/FullscreenPass.h"
 #include "gpu/Texture.h"
-#include "gpu/Buffers.h"
 #include "gpu/WorkList.h"
 #include "lightshafts/LightShaftSettings.h"
 #include "lightshafts/LightShaftStructures.h"
-#include "render/FrameContext.h"
-#include "shadows/CloudShadowInputs.h"
-#include "shadows/ShadowInputs.h"
-#include "shadows/ShadowStructures.h"
 
 #include <array>
 #include <memory>

@@ -6,16 +6,16 @@
 // atmosphere's hand-off (ScatteringLookup) and the cascades through theirs (ShadowInputs).
 // Two techniques ("Scattering technique"): epipolar sampling (EpipolarSampling), and the
 // brute-force reference, one ray march per pixel ("Light shafts (brute force)").
-#include "atmosphere/ScatteringLookup.h"
+#include "frame/CloudShadowInputs.h"
+#include "frame/FrameContext.h"
+#include "frame/ScatteringLookup.h"
+#include "frame/ShadowInputs.h"
+#include "frame/ShadowStructures.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/FullscreenPass.h"
 #include "lightshafts/EpipolarSampling.h"
 #include "lightshafts/LightShaftSettings.h"
 #include "lightshafts/LightShaftStructures.h"
-#include "render/FrameContext.h"
-#include "shadows/CloudShadowInputs.h"
-#include "shadows/ShadowInputs.h"
-#include "shadows/ShadowStructures.h"
 
 namespace firmament {
 

@@ -2,8 +2,8 @@
 // The HDR pipeline, frame order step 7: scene luminance, light adaptation and tone mapping to
 // the display target. Owns its passes and their resources; docs/tonemapping.md explains it.
 #include "core/ExrImage.h"
+#include "frame/FrameContext.h"
 #include "gpu/DelayedScalarReadback.h"
-#include "render/FrameContext.h"
 #include "postfx/ExposureReading.h"
 #include "postfx/SceneLuminance.h"
 #include "postfx/ToneMappingPass.h"

@@ -3,12 +3,12 @@
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/AtmosphereParameters.h"
 #include "clouds/Clouds.h"
+#include "frame/FrameContext.h"
 #include "lightshafts/LightShafts.h"
-#include "render/FrameContext.h"
+#include "postfx/ToneMapping.h"
 #include "scene/OrientationGridPass.h"
 #include "settings/State.h"
 #include "shadows/CascadedShadowMaps.h"
-#include "postfx/ToneMapping.h"
 #include "terrain/ClipmapLayout.h"
 #include "terrain/HeightFieldFile.h"
 #include "terrain/Terrain.h"
@@ -54,8 +54,10 @@ void Renderer::startOver() {
 
 void Renderer::resize(int width, int height, bool ownOutput) { targets_.resize(device_, width, height, ownOutput); }
 
-// The frame order. Each step is one technique's pass or passes; each hands what the next need
-// explicitly (the ground's lighting, the shadow cascades).
+// The frame order (docs/architecture.md, "The frame", numbers its steps as these comments do).
+// Each step is one technique's pass or passes. What one technique hands another (the ground's
+// lighting, the shadow cascades, the clouds' shadows, the atmosphere's look-ups) is handed here
+// and nowhere else: no technique includes another's header.
 void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID3D11RenderTargetView* output,
                       const std::function<void(ID3D11RenderTargetView*)>& drawGui) {
     if (!output) output = targets_.output().rtv.Get();
@@ -65,34 +67,35 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
     frameConstants_.update(context_, constants);
     FrameContext frame{device_, context_, shaders_, profiler_, targets_, frameConstants_.get(), constants, camera, state.sun,
                        time.seconds, time.deltaSeconds, finishWorkNow};
+    // 1. The frame's targets cleared.
     {
         auto pass = profiler_.scope("Clear frame targets");
         context_->ClearRenderTargetView(targets_.hdr().rtv.Get(), kBackground);
         context_->ClearDepthStencilView(targets_.depth().dsv.Get(), D3D11_CLEAR_DEPTH, 0.0f, 0);  // reversed Z: 0 is the far plane
     }
-    // 1. The atmosphere's tables, when its settings changed (a window spreads the work over
+    // 2. The atmosphere's tables, when its settings changed (a window spreads the work over
     //    frames and shows the grid's own sky until they are ready).
     atmosphere_->update(frame, state.atmosphere);
     const bool scattering = atmosphere_->ready(state.atmosphere);
-    // 2. The orientation grid: its ground alone under the atmosphere, else its own sky too.
+    // 3. The orientation grid: its ground alone under the atmosphere, else its own sky too.
     if (state.scene.orientationGrid) {
         auto pass = profiler_.scope("Orientation grid");
         orientationGrid_->render(frame, scattering);
     }
-    // 3. The clouds' particles, generated and sorted on the GPU, their tables, their light
+    // 4. The clouds' particles, generated and sorted on the GPU, their tables, their light
     //    occlusion and their shadow map: before the terrain, which they shadow.
     clouds_->update(frame, state.clouds);
-    // 4. The shadow cascades, then 5. the terrain lit by the atmosphere's tables through them and
+    // 5. The shadow cascades, then 6. the terrain lit by the atmosphere's tables through them and
     //    the clouds' shadows.
     if (state.terrain.enabled) renderShadowsAndTerrain(frame, state);
-    // 5b. The particles' view as geometry (Show particles: bounding shapes).
+    // 7. The particles' view as geometry (Show particles: bounding shapes).
     clouds_->renderGeometry(frame, state.clouds);
-    // 6. The sky and the sun where nothing was drawn, 7. the aerial perspective over geometry:
+    // 8. The sky and the sun where nothing was drawn, 9. the aerial perspective over geometry:
     //    with light shafts, both in their pass, through the shadow cascades drawn this frame and,
     //    by "Shafts from clouds", the clouds (drawn into the cascades, or their transparency map).
     if (lightShaftsDrawn(state)) {
         const ShaftsFromClouds fromClouds = clouds_->shadowMap().active() ? state.clouds.shaftsFromClouds : ShaftsFromClouds::None;
-        if (fromClouds == ShaftsFromClouds::ShadowMap && state.terrain.enabled) clouds_->mergeShadowsInto(frame, *shadows_);
+        if (fromClouds == ShaftsFromClouds::ShadowMap && state.terrain.enabled) drawCloudsIntoCascades(frame);
         const ShadowInputs shadows = state.terrain.enabled ? shadows_->inputs() : ShadowInputs{};
         const CloudShadowInputs cloudShadows = fromClouds == ShaftsFromClouds::TransparencyMap ? clouds_->shadows() : CloudShadowInputs{};
         lightShafts_->render(frame, state.lightShafts, atmosphere_->scatteringLookup(frame, state.atmosphere), shadows, cloudShadows);
@@ -100,7 +103,7 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         atmosphere_->renderSky(frame, state.atmosphere);
         atmosphere_->renderAerialPerspective(frame, state.atmosphere);
     }
-    // 8. The clouds, shaded through the tables of the atmosphere model drawn alone (or the
+    // 10. The clouds, shaded through the tables of the atmosphere model drawn alone (or the
     //     particles' translucent view), over the lit scene.
     {
         const AtmosphereSettings& a = state.atmosphere;
@@ -110,9 +113,9 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
         const BrunetonLookup brunetonTables = bruneton ? atmosphere_->brunetonLookup(frame, a) : BrunetonLookup{};
         clouds_->renderTranslucent(frame, state.clouds, {yusov ? &yusovTables : nullptr, bruneton ? &brunetonTables : nullptr});
     }
-    // 9. Luminance, exposure, adaptation and tone mapping to the output.
+    // 11. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);
-    // 10. The GUI over the output.
+    // 12. The GUI over the output.
     if (drawGui) {
         auto pass = profiler_.scope("GUI");
         drawGui(output);
@@ -140,6 +143,16 @@ void Renderer::renderShadowsAndTerrain(FrameContext& frame, const State& state) 
     auto pass = profiler_.scope("Terrain");
     for (const GroundLighting& lighting : atmosphere_->groundLighting(frame, state.atmosphere))
         terrain.render(frame, lighting, shadows_->inputs(), clouds_->shadows(), state.terrain);
+}
+
+// "Shafts from clouds: shadow map": the clouds hand their shadows to the light shafts through the
+// cascades, drawn into each cascade drawn this frame as one more caster.
+void Renderer::drawCloudsIntoCascades(FrameContext& frame) {
+    if (shadows_->cascades().empty()) return;
+    auto pass = profiler_.scope("Clouds: shadows into the cascades");
+    shadows_->addCasters(frame.context, [&](ID3D11Buffer*, size_t cascade) {
+        clouds_->shadowMap().drawIntoCascade(frame, shadows_->cascades()[cascade].worldToClip);
+    });
 }
 
 Camera Renderer::viewCamera(const State& state) {

@@ -6,11 +6,11 @@
 // its panel file, and one line of the frame order.
 #include "core/Camera.h"
 #include "core/ExrImage.h"
+#include "frame/FrameTargets.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/GpuProfiler.h"
 #include "gpu/SharedStructures.h"
 #include "postfx/ExposureReading.h"
-#include "render/FrameTargets.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
 
@@ -100,6 +100,7 @@ public:
 private:
     gpu::FrameConstants frameConstants(const State& state, const Camera& camera, FrameTime time) const;
     void renderShadowsAndTerrain(FrameContext& frame, const State& state);
+    void drawCloudsIntoCascades(FrameContext& frame);
     // The terrain, made from the height field the first time it is needed: a run with the
     // terrain off never reads the 16 MiB field.
     Terrain& terrain();

@@ -3,8 +3,8 @@
 // ground plane with 100 m and 1 km lines under a sky gradient and a sun disc, so the camera
 // and the sun can be flown and checked without the atmosphere and the terrain. Under light
 // scattering it draws the ground alone, with depth, and the atmosphere draws the rest.
+#include "frame/FrameContext.h"
 #include "gpu/FullscreenPass.h"
-#include "render/FrameContext.h"
 #include "scene/SceneSettings.h"
 
 namespace firmament {

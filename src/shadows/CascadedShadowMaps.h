@@ -4,11 +4,11 @@
 // cascades to the camera each frame (CascadeSplits.h) and has the casters draw their depth into
 // each. The cascades and their matrices stay readable (cascades()) for the light shafts.
 #include "core/Camera.h"
+#include "frame/ShadowInputs.h"
+#include "frame/ShadowStructures.h"
 #include "gpu/ConstantBuffer.h"
-#include "shadows/ShadowStructures.h"
 #include "gpu/Texture.h"
 #include "shadows/CascadeSplits.h"
-#include "shadows/ShadowInputs.h"
 #include "shadows/ShadowSettings.h"
 
 #include <d3d11.h>

@@ -3,6 +3,7 @@
 // (Shadow map resolution) and Additional panel (Num cascades, Show cascades, Smooth shadows,
 // Best cascade search, Partitioning factor), with its defaults.
 #include "core/Settings.h"
+#include "frame/ShadowStructures.h"
 
 #include <array>
 #include <string_view>
@@ -12,7 +13,6 @@ namespace firmament {
 enum class ShadowMapResolution { R512, R1024, R2048, R4096 };
 inline constexpr std::array<std::string_view, 4> kShadowMapResolutionNames{"512", "1024", "2048", "4096"};
 inline constexpr int shadowMapTexels(ShadowMapResolution r) { return 512 << static_cast<int>(r); }
-inline constexpr int kMaxCascades = 8;
 
 struct ShadowSettings {
     bool enabled = true;

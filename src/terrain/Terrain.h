@@ -3,18 +3,18 @@
 // index buffer and its per-level constants, and draws the levels around the camera into the HDR
 // frame with depth (lit by the atmosphere's tables and the shadow cascades), or their depth
 // alone into a shadow cascade.
-#include "atmosphere/GroundLighting.h"
+#include "frame/CloudShadowInputs.h"
+#include "frame/FrameContext.h"
+#include "frame/GroundLighting.h"
+#include "frame/ShadowInputs.h"
 #include "gpu/ConstantBuffer.h"
-#include "terrain/TerrainStructures.h"
 #include "gpu/ShaderLibrary.h"
 #include "gpu/Texture.h"
-#include "shadows/CloudShadowInputs.h"
-#include "shadows/ShadowInputs.h"
 #include "terrain/ClipmapLayout.h"
 #include "terrain/ClipmapMesh.h"
 #include "terrain/HeightField.h"
 #include "terrain/TerrainSettings.h"
-#include "render/FrameContext.h"
+#include "terrain/TerrainStructures.h"
 
 #include <glm/glm.hpp>
 

@@ -1,6 +1,6 @@
 #include "terrain/TerrainGenerator.h"
 
-#include "terrain/IntegerHash.h"
+#include "core/IntegerHash.h"
 
 #include <algorithm>
 #include <cmath>

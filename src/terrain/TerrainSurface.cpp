@@ -1,6 +1,6 @@
 #include "terrain/TerrainSurface.h"
 
-#include "terrain/IntegerHash.h"
+#include "core/IntegerHash.h"
 
 #include <algorithm>
 #include <cmath>

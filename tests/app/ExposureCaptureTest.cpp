@@ -33,8 +33,8 @@ Rgba8Image capture(const std::string& name, const std::vector<std::wstring>& set
     return image;
 }
 
-// The view: 400 km up, looking 30 degrees down, the sun 20 degrees up; the rest the
-// program's defaults.
+// The Earth from orbit, where auto exposure once went wrong: 400 km up, looking 30 degrees
+// down, the sun 20 degrees up; the rest the program's defaults.
 const std::vector<std::wstring> kOrbit{L"camera.position=0,400000,0", L"camera.pitch=-30", L"sun.elevation=20"};
 
 // Of the pixels that are not black (the Earth and its atmosphere, not space), the share with a

@@ -158,7 +158,9 @@ INSTANTIATE_TEST_SUITE_P(SunElevations, SkyCapture,
 // Unlike the table, the integration has no interpolation to excuse: each sample is held to its
 // own value (relative error, with a floor of 5% of the frame's brightest so that the darkest
 // samples do not decide). Uniform steps failed this: 30 of them put one or two nodes in the
-// aerosol layer of a rising ray, 6% off in the median and 31% at worst from 1 km (Issue 14).
+// aerosol layer of a rising ray, 6% off in the median and 31% at worst from 1 km; the nodes
+// are now spaced geometrically away from the ray's low point
+// (shaders/atmosphere/yusov/single_scattering.hlsli).
 struct IntegrationCase {
     double altitude, sunElevation, pitch;
     bool shafts = false;  // drawn by the light shafts' epipolar passes

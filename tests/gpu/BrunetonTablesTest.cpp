@@ -135,7 +135,7 @@ TEST_F(BrunetonModel, SingleScatteringMatchesTheCpu) {
 
 // The two models from the same constants agree on single scattering (full-size tables, one
 // order each), at random points away from the horizon band. Each model's own error against
-// the reference is tested above and in AtmosphereLutTest; this is the check that they
+// the reference is tested above and in AtmosphereLutTest; this checks that they
 // describe one atmosphere.
 TEST_F(BrunetonModel, ModelsAgreeOnSingleScattering) {
     const auto b = bruneton(LutResolution::Full, 1, 0.0);

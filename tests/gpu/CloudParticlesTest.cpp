@@ -7,14 +7,14 @@
 #include "clouds/CloudParticles.h"
 #include "clouds/CloudPathTracer.h"
 #include "clouds/CloudReference.h"
-#include "tables/StagedComputation.h"
 #include "clouds/CloudShadowMap.h"
 #include "clouds/DeckDiffusion.h"
 #include "clouds/LightSpace.h"
 #include "clouds/ParticleOpacity.h"
 #include "clouds/ParticleTables.h"
 #include "core/Camera.h"
-#include "render/FrameContext.h"
+#include "frame/FrameContext.h"
+#include "tables/StagedComputation.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // GPU test fixture for tests that run a technique's passes the way the renderer does: the WARP
 // device, with the frame's constant buffer, a timestamp profiler and frame targets.
 #include "WarpDevice.h"
+#include "frame/FrameTargets.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/GpuProfiler.h"
 #include "gpu/SharedStructures.h"
-#include "render/FrameTargets.h"
 
 #include <memory>
 

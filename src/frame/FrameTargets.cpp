@@ -1,4 +1,4 @@
-#include "render/FrameTargets.h"
+#include "frame/FrameTargets.h"
 
 #include "gpu/SwapChain.h"
 

@@ -4,7 +4,7 @@
 // functions of shaders/atmosphere/yusov/lookup.hlsli and aerial_perspective.hlsli take: the
 // physical constants with the tables' sizes (the parameterization's inputs), the tables, their
 // sampler, the render modes and the sun's disc. Nothing of the atmosphere's internals.
-#include "atmosphere/AtmosphereSettings.h"
+#include "frame/ScatteringModes.h"
 
 #include <d3d11.h>
 

@@ -2,10 +2,10 @@
 // What every pass of a frame needs, handed from the renderer to each technique's update and
 // render steps: the device and its context, the shader library, the profiler that times the
 // passes, the frame's constants (camera, sun, screen, time: FrameConstants at b0) and targets.
+#include "frame/FrameTargets.h"
 #include "gpu/GpuProfiler.h"
 #include "gpu/ShaderLibrary.h"
 #include "gpu/SharedStructures.h"
-#include "render/FrameTargets.h"
 
 #include <d3d11.h>
 

@@ -1,0 +1,56 @@
+# cmake -DSOURCE_DIR=<the src folder> -P CheckLayers.cmake
+#
+# Checks every quoted include of every .h and .cpp under SOURCE_DIR that names a file of
+# SOURCE_DIR against the rooms of FirmamentLayers.cmake: a file's room is its first folder, and
+# it may include its own room and those its room lists. Every problem is named (the file, the
+# include, what the room may include); then the script fails. Includes of shader headers
+# (found on the shaders' include path, not in SOURCE_DIR) and system headers are not rooms.
+cmake_minimum_required(VERSION 3.25)
+include(${CMAKE_CURRENT_LIST_DIR}/FirmamentLayers.cmake)
+
+if(NOT IS_DIRECTORY "${SOURCE_DIR}")
+    message(FATAL_ERROR "CheckLayers: SOURCE_DIR is not a folder: '${SOURCE_DIR}'")
+endif()
+
+file(GLOB_RECURSE files RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/*.h ${SOURCE_DIR}/*.cpp)
+list(SORT files)
+set(problems "")
+set(checked 0)
+foreach(file IN LISTS files)
+    string(FIND "${file}" "/" slash)
+    if(slash EQUAL -1)
+        continue()  # src/'s own files (none holds code of a room)
+    endif()
+    string(SUBSTRING "${file}" 0 ${slash} room)
+    if(NOT room IN_LIST FIRMAMENT_ROOMS)
+        list(APPEND problems "src/${file}: '${room}' is not a room: add it to cmake/FirmamentLayers.cmake with the rooms it may include")
+        continue()
+    endif()
+    file(STRINGS ${SOURCE_DIR}/${file} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"[^\"]+\"")
+    foreach(line IN LISTS lines)
+        string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*$" "\\1" included "${line}")
+        string(FIND "${included}" "/" slash)
+        if(slash EQUAL -1 OR NOT EXISTS ${SOURCE_DIR}/${included})
+            continue()
+        endif()
+        string(SUBSTRING "${included}" 0 ${slash} target)
+        math(EXPR checked "${checked} + 1")
+        if(target STREQUAL room OR target IN_LIST FIRMAMENT_ROOM_${room}_MAY_INCLUDE)
+            continue()
+        endif()
+        set(may "${FIRMAMENT_ROOM_${room}_MAY_INCLUDE}")
+        if(may STREQUAL "")
+            set(may "nothing")
+        endif()
+        string(REPLACE ";" ", " may "${may}")
+        list(APPEND problems "src/${file} includes \"${included}\": the room ${room} may include only itself and ${may}")
+    endforeach()
+endforeach()
+
+list(LENGTH problems count)
+if(count GREATER 0)
+    list(JOIN problems "\n  " listing)
+    message(FATAL_ERROR "Layers: ${count} include(s) up or across the rooms (cmake/FirmamentLayers.cmake):\n  ${listing}")
+endif()
+list(LENGTH files total)
+message(STATUS "Layers: ${checked} includes of src/ in ${total} files, none up or across the rooms")
