@@ -1,6 +1,7 @@
 #pragma once
-// The command line: parsed into Options, or an error message naming the problem. Pure (no
-// Windows calls), so it is unit-tested on its own.
+// The command line: parsed into Options, or an error message naming the problem. One table of
+// options (CommandLine.cpp) drives both the parser and the usage text, so the two cannot
+// disagree. Pure (no Windows calls), so it is unit-tested on its own.
 #include "gpu/DeviceOptions.h"
 
 #include <filesystem>
@@ -66,5 +67,14 @@ struct ParsedCommandLine {
 
 ParsedCommandLine parseCommandLine(const std::vector<std::string>& arguments);  // without argv[0]
 std::string usageText();
+
+// An option of the table, as the tests see it: its name, its value's placeholder in the usage
+// text (empty for a flag) and a valid value.
+struct CommandLineOption {
+    std::string name;
+    std::string value;
+    std::string example;
+};
+std::vector<CommandLineOption> commandLineOptions();
 
 }  // namespace firmament

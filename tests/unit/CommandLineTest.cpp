@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace firmament {
 namespace {
 
@@ -101,12 +103,51 @@ TEST(CommandLine, SimulatedDeviceLossTakesAFrameNumber) {
     EXPECT_EQ(parse({"--simulate-device-loss=3"}).options.simulateDeviceLoss, 3);
 }
 
-TEST(CommandLine, UsageListsEveryOption) {
+// The table drives both: every option of it is in the usage text, with its value's placeholder,
+// and the parser takes it (with its example value, in both spellings), and the usage text names
+// no option the table lacks.
+TEST(CommandLine, TheOptionTableDrivesTheParserAndTheUsage) {
     const std::string usage = usageText();
+    const std::vector<CommandLineOption> options = commandLineOptions();
+    ASSERT_GE(options.size(), 30u);
+    for (const CommandLineOption& option : options) {
+        const std::string head = option.value.empty() ? option.name : option.name + " " + option.value;
+        EXPECT_NE(usage.find("  " + head), std::string::npos) << head;
+        // Taken with its example: no error of its own (an option that needs another, as
+        // --soak-report needs --soak, may still say so).
+        auto takes = [&](const std::vector<std::string>& arguments) {
+            const std::string error = parse(arguments).error;
+            const bool own = error.rfind("unknown option", 0) == 0 || error.rfind(option.name + ":", 0) == 0 ||
+                             error.rfind(option.name + " needs a value", 0) == 0 || error.rfind(option.name + " takes no value", 0) == 0;
+            EXPECT_FALSE(own) << arguments.front() << ": " << error;
+        };
+        if (option.value.empty()) {
+            takes({option.name});
+            expectError({option.name + "=1"}, option.name + " takes no value");
+        } else {
+            takes({option.name, option.example});
+            takes({option.name + "=" + option.example});
+            expectError({option.name}, option.name + " needs a value");
+        }
+    }
+    // Every "--word" at the start of a usage line is an option of the table.
+    size_t line = 0;
+    int listed = 0;
+    while ((line = usage.find("\n  --", line)) != std::string::npos) {
+        line += 3;
+        const std::string name = usage.substr(line, usage.find_first_of(" ,\n", line) - line);
+        EXPECT_TRUE(std::any_of(options.begin(), options.end(), [&](const CommandLineOption& o) { return o.name == name; })) << name;
+        ++listed;
+    }
+    EXPECT_EQ(listed, static_cast<int>(options.size()));
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
                                "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
-                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--simulate-device-loss", "--time-step", "--version", "--help"})
+                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering",
+                               "--simulate-device-loss", "--time-step", "--batch", "--soak", "--soak-report", "--flight",
+                               "--record-flight", "--export-luts", "--cache-dir", "--no-cache", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
+    EXPECT_TRUE(parse({"-h"}).options.help);
+    EXPECT_TRUE(parse({"/?"}).options.help);
 }
 
 TEST(CommandLine, AtmosphereTableOptions) {
