@@ -12,12 +12,14 @@
 #               atmosphere's look-ups); below the techniques so that none includes another
 #   techniques  atmosphere, shadows, terrain, lightshafts, clouds, postfx, scene: one room each,
 #               none including another
+#   reference   the CPU twins and references the tests hold the techniques to; linked by the
+#               tests only, and no other room may include it
 #   settings    State: every technique's settings as one JSON state
 #   ui          the GUI: panels over the settings
 #   render      Renderer: the frame order, the one place where techniques meet
 #   app         the program: window, loop, captures, benchmark
 set(FIRMAMENT_TECHNIQUE_ROOMS atmosphere shadows terrain lightshafts clouds postfx scene)
-set(FIRMAMENT_ROOMS core gpu input tables frame ${FIRMAMENT_TECHNIQUE_ROOMS} settings ui render app)
+set(FIRMAMENT_ROOMS core gpu input tables frame ${FIRMAMENT_TECHNIQUE_ROOMS} reference settings ui render app)
 
 set(FIRMAMENT_ROOM_core_MAY_INCLUDE "")
 set(FIRMAMENT_ROOM_gpu_MAY_INCLUDE core)
@@ -27,6 +29,7 @@ set(FIRMAMENT_ROOM_frame_MAY_INCLUDE gpu core)
 foreach(technique IN LISTS FIRMAMENT_TECHNIQUE_ROOMS)
     set(FIRMAMENT_ROOM_${technique}_MAY_INCLUDE frame tables gpu core)
 endforeach()
+set(FIRMAMENT_ROOM_reference_MAY_INCLUDE ${FIRMAMENT_TECHNIQUE_ROOMS} frame tables gpu core)
 set(FIRMAMENT_ROOM_settings_MAY_INCLUDE ${FIRMAMENT_TECHNIQUE_ROOMS} input core)
 set(FIRMAMENT_ROOM_ui_MAY_INCLUDE settings ${FIRMAMENT_TECHNIQUE_ROOMS} input gpu core)
 set(FIRMAMENT_ROOM_render_MAY_INCLUDE settings ${FIRMAMENT_TECHNIQUE_ROOMS} frame tables gpu core)

@@ -34,21 +34,23 @@ add_library(firmament_portable STATIC
     ${src}/app/SoakSchedule.cpp
     ${src}/app/SoakVerdict.cpp
     ${src}/atmosphere/AtmosphereParameters.cpp
-    ${src}/atmosphere/ReferenceAtmosphere.cpp
+    ${src}/reference/ReferenceAtmosphere.cpp
     ${src}/atmosphere/SunAnimation.cpp
     ${src}/atmosphere/bruneton/BrunetonParameterization.cpp
     ${src}/atmosphere/yusov/YusovParameterization.cpp
     ${src}/clouds/CloudField.cpp
     ${src}/clouds/CloudGrid.cpp
-    ${src}/clouds/CloudMedium.cpp
-    ${src}/clouds/CloudPathTracer.cpp
-    ${src}/clouds/DeckDiffusion.cpp
+    ${src}/reference/CloudFieldTwin.cpp
+    ${src}/reference/CloudMedium.cpp
+    ${src}/reference/CloudPathTracer.cpp
+    ${src}/reference/DeckDiffusion.cpp
     ${src}/clouds/LightSpace.cpp
     ${src}/clouds/OpticalDepthTable.cpp
     ${src}/clouds/ParticleBlending.cpp
     ${src}/clouds/ParticleDensity.cpp
     ${src}/clouds/ParticleScattering.cpp
-    ${src}/clouds/VolumeBlending.cpp
+    ${src}/reference/SunColumnTwin.cpp
+    ${src}/reference/VolumeBlendingTwin.cpp
     ${src}/core/Camera.cpp
     ${src}/core/ExrImage.cpp
     ${src}/core/FileIO.cpp
@@ -125,7 +127,7 @@ firmament_test_groups(firmament_portable_tests SHARDS 2 TIMEOUT 600
 
 # The rooms of src/ (cmake/FirmamentLayers.cmake): the tree's includes all run down them, and
 # the check fails on an include up or across them. Checked here, natively, and by every build.
-foreach(case IN ITEMS tree upward across new-room)
+foreach(case IN ITEMS tree upward across new-room reference)
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/layers-${case})
     file(MAKE_DIRECTORY ${scratch})
     add_test(NAME Layers.${case} COMMAND ${CMAKE_COMMAND} -DPROJECT_DIR=${PROJECT_SOURCE_DIR} -DSCRATCH=${scratch} -DCASE=${case}

@@ -2,7 +2,7 @@
 #define FIRMAMENT_ATMOSPHERE_PHYSICS_HLSLI
 // The atmosphere's physics on the GPU: geometry of the spherical Earth, particle densities,
 // optical depth and phase functions. Positions are relative to the Earth's centre, in metres.
-// The same equations in double precision: src/atmosphere/ReferenceAtmosphere.cpp.
+// The same equations in double precision: src/reference/ReferenceAtmosphere.cpp.
 #include "atmosphere/atmosphere_structures.hlsli"
 
 static const float kPi = 3.14159265358979;

@@ -2,7 +2,7 @@
 #define FIRMAMENT_CLOUD_FIELD_HLSLI
 // The cloud field: the cell grid's geometry, the coverage the density map gives a place, and the
 // particles a cell holds (Yusov 2014, "Particle generation"; docs/clouds.md). The CPU twin is
-// src/clouds/CloudField.cpp: change both together.
+// src/clouds/CloudField.cpp and src/reference/CloudFieldTwin.cpp: change them together.
 #include "clouds/cloud_structures.hlsli"
 #include "common/hash.hlsli"
 

@@ -5,7 +5,7 @@
 // field, one tile per texel. Each tile lists the particles whose footprint covers it, ordered from
 // the sun; a node is (the particle's slot, the next node, its centre's distance toward the sun as
 // float bits). The head texture has a row more than the map, whose first texel, (0, n), counts the
-// nodes asked for. The CPU twin is src/clouds/LightSpace.cpp.
+// nodes asked for. The CPU twin is src/reference/SunColumnTwin.cpp.
 #include "clouds/cloud_structures.hlsli"
 
 cbuffer LightSpaceBuffer : register(b2) { CloudLightSpaceConstants lightSpace; };

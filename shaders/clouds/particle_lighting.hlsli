@@ -46,7 +46,7 @@ float3 particleScattering(float3 s, float3 d, float3 l, float opticalRadius) {
     return a + weight * (b - a);
 }
 
-// Deck diffusion (src/clouds/DeckDiffusion.h, whose deckDiffuseRadiance() is the CPU twin): the
+// Deck diffusion (src/reference/DeckDiffusion.h, whose deckDiffuseRadiance() is the CPU twin): the
 // delta-Eddington (Joseph, Wiscombe and Weinman 1976) diffuse radiance (1/sr, per unit sun
 // irradiance) at optical depth `depth` of a conservatively scattering slab of optical thickness
 // `total` lit along its normal, both along the sun's rays and unscaled, travelling at cosine mu

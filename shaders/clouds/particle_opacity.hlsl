@@ -6,7 +6,7 @@
 // on, adding what the ray away from the sun crosses in each particle farther: the column beyond,
 // which deck diffusion needs (the light a deck sends back up depends on how much cloud is below).
 // With the early exit, it stops once the two together pass the threshold (src/clouds/
-// LightSpace.h, kOpacityEarlyExitDepth). The CPU twin is src/clouds/LightSpace.cpp's sunColumn().
+// LightSpace.h, kOpacityEarlyExitDepth). The CPU twin is src/reference/SunColumnTwin.cpp's sunColumn().
 #include "clouds/light_space.hlsli"
 #include "clouds/optical_depth_table.hlsli"
 #include "clouds/particle_shape.hlsli"

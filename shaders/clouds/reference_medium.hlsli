@@ -2,7 +2,7 @@
 #define FIRMAMENT_REFERENCE_MEDIUM_HLSLI
 // The medium the particles describe, as the clouds' path-traced reference walks it
 // (docs/clouds.md, "Path-traced reference"). The CPU twin is ParticleMedium
-// (src/clouds/CloudMedium.cpp): the same density functions, summed where particles overlap.
+// (src/reference/CloudMedium.cpp): the same density functions, summed where particles overlap.
 //
 // The index is the cloud grid itself. Generation puts a cell's particles within 0.3 of a cell of
 // its middle, at most 1.1 cells wide, so a particle reaches only the 3 x 3 cells of its ring

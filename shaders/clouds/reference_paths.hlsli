@@ -2,7 +2,7 @@
 #define FIRMAMENT_REFERENCE_PATHS_HLSLI
 // The clouds' path-traced reference on the GPU (docs/clouds.md, "Path-traced reference"): one
 // Monte Carlo path through the medium the particles describe (clouds/reference_medium.hlsli).
-// The CPU twin is CloudPathTracer (src/clouds/CloudPathTracer.cpp); the GPU test holds the two
+// The CPU twin is CloudPathTracer (src/reference/CloudPathTracer.cpp); the GPU test holds the two
 // to each other on the same particles and rays.
 //  - Free flights by delta tracking (Woodcock et al. 1965) over the walk's majorants.
 //  - At every collision the sun by next-event estimation: its irradiance there times Henyey and

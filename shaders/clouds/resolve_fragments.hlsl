@@ -2,7 +2,7 @@
 // kMaxPixelFragments of them nearest the camera by their back distance, sorted, then added from
 // the farthest with volume-aware blending, so that a fragment pushed behind is never overlapped
 // by a later one; the result blended over the scene with premultiplied alpha. The CPU twin is
-// blendVolumes() in src/clouds/VolumeBlending.cpp.
+// blendVolumes() in src/reference/VolumeBlendingTwin.cpp.
 #include "common/fullscreen_triangle.hlsli"
 #include "clouds/fragment_lists.hlsli"
 

@@ -1,7 +1,7 @@
 #ifndef FIRMAMENT_VOLUME_BLENDING_HLSLI
 #define FIRMAMENT_VOLUME_BLENDING_HLSLI
 // Volume-aware blending of cloud particles (Yusov 2014, "Volume-aware blending"; docs/clouds.md,
-// "Blending"). The CPU twin is src/clouds/VolumeBlending.cpp, which the tests hold against the
+// "Blending"). The CPU twin is src/reference/VolumeBlendingTwin.cpp, which the tests hold against the
 // emission-absorption integral.
 //
 // A fragment is the stretch [front, back] of the view ray inside a particle, with a uniform

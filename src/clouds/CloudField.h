@@ -1,8 +1,7 @@
 #pragma once
-// The cloud field's inputs and its CPU model: the constants the GPU's passes read (from the
-// settings, the camera and the time), the density map's texels, and the valid cells and particles
-// the GPU generates from them, computed the same way in C++ (the tests' twin of
-// shaders/clouds/cloud_field.hlsli; docs/clouds.md, "Cloudiness" and "Generation").
+// The cloud field's inputs: the constants the GPU's passes read (from the settings, the camera
+// and the time) and the density map's texels (docs/clouds.md, "Cloudiness" and "Generation").
+// The tests' twin of what the GPU generates from them is reference/CloudFieldTwin.h.
 #include "clouds/CloudGrid.h"
 #include "clouds/CloudStructures.h"
 
@@ -35,30 +34,5 @@ gpu::CloudFieldConstants cloudFieldConstants(const CloudSettings& settings, glm:
 // octaves from 4 cells per side to a quarter of the resolution, stretched to fill [0, 1].
 float cloudDensityTexel(int resolution, int x, int y);
 std::vector<float> cloudDensityMap(int resolution);  // row by row
-
-struct ModelParticle {
-    glm::vec3 centre{0.0f};
-    float horizontalRadius = 0.0f;
-    float verticalRadius = 0.0f;
-    float density = 0.0f;
-    float azimuth = 0.0f;
-    int ring = 0;
-    unsigned cell = 0;  // index in the cell list
-    int layer = 0;
-};
-
-struct CloudFieldModel {
-    std::vector<unsigned> validCells;  // indices in the cell list, in list order
-    // Per cell of the list: its coverage before it is clamped to 0..1 (not above 0: clear sky),
-    // and how far it reaches: its middle's distance from the camera less its radius (m).
-    std::vector<float> coverage;
-    std::vector<float> reach;
-    std::vector<ModelParticle> particles;
-};
-
-// What the GPU's valid-cell and generation passes produce for `constants`, `cells` (the packed
-// list, CloudGrid order) and `map`, with the camera at `camera` on a planet of `earthRadius`.
-CloudFieldModel modelCloudField(const gpu::CloudFieldConstants& constants, const std::vector<std::uint32_t>& cells, const std::vector<float>& map,
-                                glm::vec3 camera, float earthRadius);
 
 }  // namespace firmament

@@ -7,7 +7,7 @@
 //     them, and hold a majorant of the extinction that can reach them per slab of height;
 //  2. the paths (clouds/trace_clouds.hlsl): a thread per pixel adds paths to the accumulation;
 //  3. their mean over the frame (clouds/reference_composite.hlsl).
-// The CPU twin is CloudPathTracer (src/clouds/CloudPathTracer.h) over a ParticleMedium.
+// The CPU twin is CloudPathTracer (src/reference/CloudPathTracer.h) over a ParticleMedium.
 #include "clouds/CloudSettings.h"
 #include "clouds/CloudStructures.h"
 #include "gpu/Buffers.h"

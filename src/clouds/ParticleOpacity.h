@@ -9,7 +9,7 @@
 //     past itself to the end or, with the early exit, until the column is kOpacityEarlyExitDepth
 //     thick (clouds/particle_opacity.hlsl).
 // The shading lights the particle by the direct sun through the column above and by deck
-// diffusion through the whole column. The CPU twin is src/clouds/LightSpace.
+// diffusion through the whole column. The CPU twin is src/reference/SunColumnTwin.
 #include "clouds/CloudSettings.h"
 #include "clouds/CloudStructures.h"
 #include "gpu/Buffers.h"

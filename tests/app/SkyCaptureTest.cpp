@@ -6,8 +6,8 @@
 // Yusov's sky is held to the bounds twice: drawn by the atmosphere's own passes, per pixel, and
 // by the light shafts' epipolar passes with nothing to cast a shadow (no terrain, no clouds),
 // which must then draw the same sky.
-#include "atmosphere/ReferenceAtmosphere.h"
 #include "core/ExrImage.h"
+#include "reference/ReferenceAtmosphere.h"
 #include "support/HeadlessCapture.h"
 
 #include <Imath/half.h>

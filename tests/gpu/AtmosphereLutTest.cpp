@@ -1,15 +1,15 @@
 // The atmosphere's pre-computed tables on the WARP device against the CPU reference
-// (src/atmosphere/ReferenceAtmosphere): the net density table at its texels, the single
+// (src/reference/ReferenceAtmosphere): the net density table at its texels, the single
 // scattering table at its texels (the integration alone) and at random points (integration
 // and interpolation together), and no NaN or Inf anywhere.
 #include "AtmosphereQueries.h"
 #include "TableFilesCheck.h"
 #include "WarpDevice.h"
-#include "atmosphere/ReferenceAtmosphere.h"
 #include "atmosphere/yusov/YusovPrecomputation.h"
 #include "atmosphere/yusov/YusovTableFiles.h"
 #include "gpu/CommonStates.h"
 #include "gpu/ConstantBuffer.h"
+#include "reference/ReferenceAtmosphere.h"
 
 #include <Imath/half.h>
 

@@ -2,8 +2,8 @@
 // Points at which the atmosphere tests read the tables: a position relative to the Earth's
 // centre, a view and a sun direction, laid out as the probe shaders' Query structure.
 #include "atmosphere/AtmosphereParameters.h"
-#include "atmosphere/ReferenceAtmosphere.h"
 #include "atmosphere/yusov/YusovParameterization.h"
+#include "reference/ReferenceAtmosphere.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>

@@ -1,16 +1,16 @@
 // Bruneton and Neyret 2008's tables on the WARP device (src/atmosphere/bruneton): against the
-// CPU reference (src/atmosphere/ReferenceAtmosphere), and against Yusov's tables where the two
+// CPU reference (src/reference/ReferenceAtmosphere), and against Yusov's tables where the two
 // models must agree: single scattering, multiple scattering over a black ground, and the
 // sky's irradiance on the ground. Then the ground's bounce, which only Bruneton's model has.
 #include "AtmosphereQueries.h"
 #include "TableFilesCheck.h"
 #include "WarpDevice.h"
-#include "atmosphere/ReferenceAtmosphere.h"
-#include "atmosphere/yusov/YusovPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonTableFiles.h"
+#include "atmosphere/yusov/YusovPrecomputation.h"
 #include "gpu/CommonStates.h"
 #include "gpu/ConstantBuffer.h"
+#include "reference/ReferenceAtmosphere.h"
 #include "tables/SphereDirections.h"
 
 #include <Imath/half.h>

@@ -6,13 +6,13 @@
 // CPU march through the same noise, away from texel centres.
 #include "WarpDevice.h"
 #include "clouds/CloudStructures.h"
-#include "clouds/DeckDiffusion.h"
 #include "clouds/OpticalDepthTable.h"
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
 #include "gpu/Buffers.h"
 #include "gpu/CommonStates.h"
 #include "gpu/ConstantBuffer.h"
+#include "reference/DeckDiffusion.h"
 
 #include <gtest/gtest.h>
 

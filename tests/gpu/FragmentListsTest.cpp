@@ -4,10 +4,10 @@
 // background, against the CPU twin (blendVolumes); and the overflow of the pixel's limit and of
 // the node pool counted.
 #include "WarpDevice.h"
-#include "clouds/VolumeBlending.h"
 #include "clouds/VolumeBlendingPass.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/Texture.h"
+#include "reference/VolumeBlendingTwin.h"
 
 #include <gtest/gtest.h>
 

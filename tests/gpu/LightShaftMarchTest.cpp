@@ -10,14 +10,14 @@
 // and unoccluded higher orders) are held to the geometry's lit section, and to the CPU within the
 // table's own error: LUT to single scattering's integral, the higher orders to Monte Carlo
 // (checkTableModes, checkHighOrders).
-#include "KnownOccluder.h"
 #include "FrameTest.h"
+#include "KnownOccluder.h"
 #include "atmosphere/Atmosphere.h"
 #include "atmosphere/AtmosphereParameters.h"
-#include "atmosphere/ReferenceAtmosphere.h"
 #include "core/Camera.h"
 #include "gpu/CommonStates.h"
 #include "lightshafts/LightShafts.h"
+#include "reference/ReferenceAtmosphere.h"
 #include "shadows/CascadedShadowMaps.h"
 
 #include <gtest/gtest.h>

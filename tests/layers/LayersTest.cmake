@@ -6,7 +6,9 @@
 #             renderer) fails, and the message names the file and the include;
 #   across    a copy where one technique includes another (the clouds the terrain's header)
 #             fails likewise;
-#   new-room  a copy with a folder that is not a room fails, naming the folder.
+#   new-room  a copy with a folder that is not a room fails, naming the folder;
+#   reference a copy where the program includes a test's twin (the clouds' GPU reference the CPU
+#             path tracer) fails.
 cmake_minimum_required(VERSION 3.25)
 
 function(run_check source_dir out_result out_output)
@@ -48,6 +50,8 @@ elseif(CASE STREQUAL "across")
     expect_failure(clouds/Clouds.h "#include \"terrain/Terrain.h\"" "src/clouds/Clouds.h includes \"terrain/Terrain.h\"")
 elseif(CASE STREQUAL "new-room")
     expect_failure(weather/Rain.cpp "#include \"core/Log.h\"" "src/weather/Rain.cpp: 'weather' is not a room")
+elseif(CASE STREQUAL "reference")
+    expect_failure(clouds/CloudReference.h "#include \"reference/CloudPathTracer.h\"" "src/clouds/CloudReference.h includes \"reference/CloudPathTracer.h\"")
 else()
     message(FATAL_ERROR "LayersTest: unknown CASE '${CASE}'")
 endif()

@@ -1,9 +1,10 @@
-// The clouds' cell grid and cloud field on the CPU (src/clouds/CloudGrid.h, CloudField.h): ring
+// The clouds' cell grid and cloud field on the CPU (src/clouds/CloudGrid.h, CloudField.h, src/reference/CloudFieldTwin.h): ring
 // geometry, the rings tiling the outer square once, the grid moving in whole cells, the density
 // map, and what the field model generates, against Yusov 2014's description of the grid.
 #include "clouds/CloudField.h"
 #include "clouds/CloudGrid.h"
 #include "clouds/CloudSettings.h"
+#include "reference/CloudFieldTwin.h"
 
 #include <gtest/gtest.h>
 

@@ -1,15 +1,16 @@
-// The clouds' path-traced reference on the CPU (src/clouds/CloudPathTracer, CloudMedium) against
+// The clouds' path-traced reference on the CPU (src/reference/CloudPathTracer, CloudMedium) against
 // what does not share its code: Beer's law through a slab, the closed form of a slab's single
 // scattering, a white furnace (albedo 1 in a uniform sky: every path returns the sky exactly),
 // the flux through a slab conserved, the scattering table's single scattering quadrature and its
 // multiple scattering (the shipped file), and the particle field's grid against a sum over every
 // particle.
-#include "clouds/CloudMedium.h"
-#include "clouds/CloudPathTracer.h"
-#include "clouds/DeckDiffusion.h"
 #include "clouds/LightSpace.h"
 #include "clouds/ParticleDensity.h"
 #include "clouds/ParticleScattering.h"
+#include "reference/CloudMedium.h"
+#include "reference/CloudPathTracer.h"
+#include "reference/DeckDiffusion.h"
+#include "reference/SunColumnTwin.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -165,7 +166,7 @@ TEST(CloudPathTracer, TheSunsFluxThroughASlabIsConserved) {
     EXPECT_GT(transmitted, 0.1);
 }
 
-// Deck diffusion (src/clouds/DeckDiffusion.h), the particle renderer's model of the light that
+// Deck diffusion (src/reference/DeckDiffusion.h), the particle renderer's model of the light that
 // diffuses through a column of cloud, against the path tracer in a homogeneous slab lit along its
 // normal, g = 0.9, at optical thicknesses 4, 16 and 48: the fluxes reflected and transmitted
 // after scattering (the model's diffuse radiance integrated over each face's hemisphere; the

@@ -1,6 +1,6 @@
 // The CPU reference model against closed forms: vertical and horizontal optical depths, the
 // optically thin limit of single scattering, the Earth's shadow, the quadrature itself.
-#include "atmosphere/ReferenceAtmosphere.h"
+#include "reference/ReferenceAtmosphere.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// Volume-aware blending on the CPU (src/clouds/VolumeBlending.h) against the emission-absorption
+// Volume-aware blending on the CPU (src/reference/VolumeBlendingTwin.h) against the emission-absorption
 // integral it stands for: each fragment a uniform medium of extinction sigma whose source is its
 // colour, so that the light reaching the camera is the integral of c(s) sigma(s) T(0, s) ds and the
 // transmittance T(0, inf). For two fragments the paper's front / intersection / back formulas are
 // exact; the tests march the integral finely and compare.
 #include "clouds/ParticleBlending.h"
-#include "clouds/VolumeBlending.h"
+#include "reference/VolumeBlendingTwin.h"
 
 #include <gtest/gtest.h>
 

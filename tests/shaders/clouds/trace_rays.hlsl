@@ -1,5 +1,5 @@
 // The clouds' path-traced reference (clouds/reference_paths.hlsli) under the CPU twin's lighting
-// (src/clouds/CloudPathTracer.h, CloudLighting): a sun of constant irradiance reference.light.rgb
+// (src/reference/CloudPathTracer.h, CloudLighting): a sun of constant irradiance reference.light.rgb
 // along frame.directionToSun, a sky of constant radiance reference.light.w, no air, and, with
 // reference.options.y, a Lambertian plane at y = reference.ground.x of albedo ground.yzw.
 // A thread per ray of `rays` (origin, direction), reference.paths.y paths each: the mean light

@@ -14,7 +14,7 @@
 //   Lambertian plane, optional) gathers the sun and the sky there and bounces on.
 // Orders can be selected (first..last scattering event), so that single scattering can be held
 // to its closed form and multiple scattering to the scattering table.
-#include "clouds/CloudMedium.h"
+#include "reference/CloudMedium.h"
 
 #include <glm/vec3.hpp>
 

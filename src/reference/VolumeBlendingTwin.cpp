@@ -1,4 +1,4 @@
-#include "clouds/VolumeBlending.h"
+#include "reference/VolumeBlendingTwin.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "atmosphere/ReferenceAtmosphere.h"
+#include "reference/ReferenceAtmosphere.h"
 
 #include <algorithm>
 #include <array>

@@ -6,8 +6,8 @@
 // be checked against, and the particle field itself: every particle's own density function
 // (shaders/clouds/particle_density.hlsli, turned by its azimuth), times its density and the
 // extinction at density 1, summed where particles overlap, found through a uniform grid.
-#include "clouds/CloudField.h"
 #include "clouds/CloudSettings.h"
+#include "reference/CloudFieldTwin.h"
 
 #include <glm/vec3.hpp>
 

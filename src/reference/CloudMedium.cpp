@@ -1,4 +1,4 @@
-#include "clouds/CloudMedium.h"
+#include "reference/CloudMedium.h"
 
 #include "clouds/ParticleDensity.h"
 

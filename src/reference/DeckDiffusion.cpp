@@ -1,4 +1,4 @@
-#include "clouds/DeckDiffusion.h"
+#include "reference/DeckDiffusion.h"
 
 #include <algorithm>
 #include <cmath>

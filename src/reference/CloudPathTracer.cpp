@@ -1,4 +1,4 @@
-#include "clouds/CloudPathTracer.h"
+#include "reference/CloudPathTracer.h"
 
 #include <glm/geometric.hpp>
 
