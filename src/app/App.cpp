@@ -1,15 +1,15 @@
+// The program's loop (App.h): construction, the frames one after another (input and flight,
+// then the frame, captures and Present), a minimized window, the window's size, and the answer
+// to a lost device. The device itself is DeviceResources.cpp's; the keys AppInput.cpp's; the
+// frame and its GUI model AppFrame.cpp's; captures AppCaptures.cpp's; the benchmark and the
+// printed timings AppBenchmark.cpp's.
 #include "app/App.h"
 
-#include "app/BenchmarkRunner.h"
-#include "app/Capture.h"
 #include "app/ProcessCounters.h"
 #include "atmosphere/SunAnimation.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "core/Log.h"
-#include "core/SettingsJson.h"
-#include "gpu/PrecompiledShaders.h"
-#include "gpu/SourceShaderCompilers.h"
 #include "FirmamentVersion.h"
 
 #include <algorithm>
@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <iostream>
 #include <utility>
 
 namespace firmament {
@@ -28,20 +27,6 @@ namespace {
 // --time-step 0 holds still).
 constexpr auto kSourcePollInterval = std::chrono::milliseconds(250);
 
-std::filesystem::path executableFolder() {
-    wchar_t path[MAX_PATH];
-    const DWORD length = GetModuleFileNameW(nullptr, path, MAX_PATH);
-    return std::filesystem::path(std::wstring(path, length)).parent_path();
-}
-
-// Checked before any window or device exists, so that bad input fails fast.
-std::unique_ptr<ShaderCompiler> openShaderFolder(const Options& options) {
-    const auto folder = options.shaderDir.value_or(executableFolder() / "shaders");
-    auto shaders = std::make_unique<PrecompiledShaders>(folder);
-    log::info("shaders: " + std::to_string(shaders->size()) + " precompiled permutations in " + folder.string());
-    return shaders;
-}
-
 const Options& checkedOptions(const Options& options) {
     if (options.capture) {
         ensureWritable(options.capturePng());
@@ -50,67 +35,7 @@ const Options& checkedOptions(const Options& options) {
     return options;
 }
 
-// The cache of the pre-computed tables: --cache-dir, else %LOCALAPPDATA%\Firmament\cache,
-// else a "cache" folder beside the program.
-TableStorage tableStorage(const Options& options) {
-    TableStorage storage;
-    storage.exportFolder = options.exportLuts;
-    storage.mediaFolder = executableFolder() / "media";
-    if (options.noCache) return storage;
-    if (options.cacheDir) {
-        storage.cacheFolder = options.cacheDir;
-    } else if (const wchar_t* localAppData = _wgetenv(L"LOCALAPPDATA"); localAppData && *localAppData) {
-        storage.cacheFolder = std::filesystem::path(localAppData) / "Firmament" / "cache";
-    } else {
-        storage.cacheFolder = executableFolder() / "cache";
-    }
-    return storage;
-}
-
-DeviceOptions deviceOptions(const Options& options) {
-    DeviceOptions d;
-    d.driver = options.driver;
-    d.adapterIndex = options.adapter;
-    return d;
-}
-
-std::optional<int> digitKey(WPARAM key) {
-    if (key >= '1' && key <= '9') return static_cast<int>(key - '0');
-    if (key >= VK_NUMPAD1 && key <= VK_NUMPAD9) return static_cast<int>(key - VK_NUMPAD0);
-    return std::nullopt;
-}
-
 }  // namespace
-
-DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderCompiler> precompiled, const TableStorage& storage,
-                                 HWND window, int width, int height)
-    : device(deviceOptions(options)),
-      shaders(device.device(), std::move(precompiled)),
-      renderer(device.device(), device.context(), shaders, storage) {
-    log::info("device: " + device.describe());
-
-    // Hot reload compiles from the HLSL folder the build used, unless told otherwise.
-    const auto& compiled = static_cast<const PrecompiledShaders&>(shaders.compiler());
-    const auto sourceRoot = options.shaderSource ? options.shaderSource : compiled.sourceRoot();
-    const auto choice = parseSourceCompilerChoice(options.shaderCompiler).value_or(SourceCompilerChoice::Auto);
-    std::error_code ec;
-    if (choice == SourceCompilerChoice::None) {
-        log::info("shader hot reload: off (--shader-compiler none)");
-    } else if (!sourceRoot || !std::filesystem::is_directory(*sourceRoot, ec)) {
-        if (options.shaderSource) throw Error("--shader-source: '" + options.shaderSource->string() + "' is not a folder");
-        log::warning("shader hot reload: off (the HLSL folder " + (sourceRoot ? sourceRoot->string() : std::string("?")) +
-                     " is not there; pass --shader-source)");
-    } else if (auto compiler = makeSourceCompiler(choice, *sourceRoot, compiled.cacheLauncher())) {
-        log::info("shader hot reload: " + compiler->name() + " from " + sourceRoot->string());
-        shaders.enableHotReload(std::move(compiler), *sourceRoot);
-    } else {
-        log::warning("shader hot reload: off (no shader compiler found: d3dcompiler_47.dll or fxc.exe)");
-    }
-
-    if (!options.headless) swapChain = std::make_unique<SwapChain>(device, window, width, height);
-    overlay = std::make_unique<Overlay>(window, device.device(), device.context());
-    renderer.resize(width, height, !swapChain);
-}
 
 App::App(const Options& options, const State& state, std::optional<FlightPath> flight, std::optional<SoakSchedule> soak)
     : options_(checkedOptions(options)),
@@ -131,109 +56,6 @@ App::App(const Options& options, const State& state, std::optional<FlightPath> f
     // Every headless run sees the same times; --time-step gives a window (or a headless run) its own step.
     if (options_.timeStep) timer_.setFixedStep(*options_.timeStep);
     else if (options_.headless) timer_.setFixedStep(1.0 / 60.0);
-}
-
-void App::recoverFromDeviceLoss(const std::string& why) {
-    const auto start = std::chrono::steady_clock::now();
-    const int width = gpu_->renderer.targets().width();
-    const int height = gpu_->renderer.targets().height();
-    log::warning("the Direct3D device was lost after frame " + std::to_string(timer_.frameCount()) + " (" + why +
-                 "): making every GPU resource again; the settings and the camera are kept");
-    gpu_.reset();  // the old device's objects go first, the GUI's context with them
-    gpu_ = std::make_unique<DeviceResources>(options_, openShaderFolder(options_), tableStorage(options_), window_->handle(), width, height);
-    ++deviceLosses_;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char text[64];
-    std::snprintf(text, sizeof text, "%.2f s", seconds);
-    log::info("device recreated in " + std::string(text) + " (loss " + std::to_string(deviceLosses_) + "); rendering goes on");
-    setNotice("the Direct3D device was lost (" + why + ") and made again", true);
-}
-
-ID3D11RenderTargetView* App::outputTarget() const {
-    return gpu_->swapChain ? gpu_->swapChain->backBufferRtv() : gpu_->renderer.targets().output().rtv.Get();
-}
-
-ID3D11Texture2D* App::outputTexture() const {
-    return gpu_->swapChain ? gpu_->swapChain->backBuffer() : gpu_->renderer.targets().output().texture.Get();
-}
-
-void App::setNotice(std::string text, bool isError) {
-    notice_ = std::move(text);
-    noticeIsError_ = isError;
-}
-
-void App::onInput(UINT message, WPARAM wParam, LPARAM lParam) {
-    // (No GUI while the device resources are being made: at start-up and after a device loss.)
-    const bool gui = gpu_ && gpu_->overlay;
-    keyboardMouse_.onMessage(message, wParam, lParam, gui && gpu_->overlay->wantsMouse(), gui && gpu_->overlay->wantsKeyboard());
-}
-
-void App::onKey(WPARAM key) {
-    if (gpu_ && gpu_->overlay && gpu_->overlay->wantsKeyboard()) return;
-    const bool control = GetKeyState(VK_CONTROL) < 0;
-    if (const auto slot = digitKey(key)) {
-        if (control) {
-            state_.storeBookmark(*slot);
-            setNotice("bookmark " + std::to_string(*slot) + " stored", false);
-        } else if (state_.recallBookmark(*slot)) {
-            setNotice("bookmark " + std::to_string(*slot) + " recalled", false);
-        } else {
-            setNotice("bookmark " + std::to_string(*slot) + " is empty (Ctrl+" + std::to_string(*slot) + " stores one)", true);
-        }
-        return;
-    }
-    switch (key) {
-        case VK_F1: state_.ui.help = !state_.ui.help; break;
-        case VK_F5: saveState(); break;
-        case VK_F8: reloadShaders(); break;
-        case VK_F9: loadState(); break;
-        case VK_F12: shotRequested_ = true; break;
-        case VK_ESCAPE: window_->close(); break;
-        default: break;
-    }
-}
-
-void App::reloadShaders() {
-    if (!gpu_->shaders.hotReloadEnabled()) {
-        setNotice("shader hot reload is off (see the log)", true);
-        return;
-    }
-    const ReloadResult result = gpu_->shaders.reloadAll();
-    if (result.failedTechniques.empty())
-        setNotice("reloaded " + std::to_string(result.shadersCompiled) + " shaders in " + std::to_string(static_cast<int>(result.milliseconds)) +
-                      " ms" + (result.shadersInBackground ? " (" + std::to_string(result.shadersInBackground) + " more in the background)" : ""),
-                  false);
-    else
-        setNotice("shader reload failed for " + std::to_string(result.failedTechniques.size()) + " technique(s): see the error window", true);
-}
-
-void App::saveState() {
-    try {
-        saveStateFile(state_, options_.stateFile);
-        setNotice("state saved to " + options_.stateFile.string(), false);
-        log::info("state saved to " + options_.stateFile.string());
-    } catch (const Error& e) {
-        setNotice(e.what(), true);
-        log::error(e.what());
-    }
-}
-
-void App::loadState() {
-    try {
-        loadStateFile(state_, options_.stateFile);
-        setNotice("state loaded from " + options_.stateFile.string(), false);
-        log::info("state loaded from " + options_.stateFile.string());
-    } catch (const Error& e) {
-        setNotice(e.what(), true);  // the state is unchanged
-        log::error(e.what());
-    }
-}
-
-void App::handleRequests(const GuiRequests& requests) {
-    if (requests.toggleFullScreen && gpu_->swapChain) window_->toggleFullScreen();
-    if (requests.reloadShaders) reloadShaders();
-    if (requests.saveState) saveState();
-    if (requests.loadState) loadState();
 }
 
 int App::run() {
@@ -296,59 +118,6 @@ void App::renderFrames(int frames) {
         if (!lost.empty()) recoverFromDeviceLoss(lost);
         if (soak_) soak_->afterFrame(frame, gpu_->device);
     }
-}
-
-void App::captureView(const CaptureItem& view) {
-    const auto start = std::chrono::steady_clock::now();
-    options_.capture = view.png;
-    options_.captureUi = view.captureUi;
-    ensureWritable(options_.capturePng());
-    ensureWritable(options_.captureExr());
-    state_ = view.state;
-    timer_ = StepTimer{};
-    timer_.setFixedStep(options_.timeStep.value_or(1.0 / 60.0));  // a headless run's clock (App::App)
-    frameTimes_ = FrameTimeHistory{};
-    lastSourcePoll_ = {};
-    notice_.clear();
-    noticeIsError_ = false;
-    gpu_->renderer.startOver();
-    gpu_->renderer.resize(view.width, view.height, true);
-    renderFrames(view.frames);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f s", seconds);
-    log::info("batch: " + view.id + ": " + std::to_string(view.frames) + " frame" + (view.frames == 1 ? "" : "s") + " at " +
-              std::to_string(view.width) + "x" + std::to_string(view.height) + " in " + text);
-}
-
-int App::runBatch(const std::vector<CaptureItem>& views) {
-    log::info("batch: " + std::to_string(views.size()) + " views, each from a fresh start");
-    for (const CaptureItem& view : views) captureView(view);
-    return 0;
-}
-
-int App::serveCaptures(const CaptureDefaults& defaults) {
-    log::info("batch: reading views from standard input, one a line, until it ends");
-    std::string line;
-    while (std::getline(std::cin, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty()) continue;
-        CaptureItem view;
-        try {
-            view = parseCaptureRequest(line, defaults);
-            ensureWritable(view.png);
-            ensureWritable(std::filesystem::path(view.png).replace_extension(".exr"));
-        } catch (const Error& e) {  // bad input: answered, and the next request is read
-            log::error(e.what());
-            std::printf("batch: refused %s: %s\n", captureRequestId(line).c_str(), e.what());
-            std::fflush(stdout);
-            continue;
-        }
-        captureView(view);
-        std::printf("batch: done %s\n", view.id.c_str());
-        std::fflush(stdout);
-    }
-    return 0;
 }
 
 void App::sleepWhileMinimized() {
@@ -430,97 +199,20 @@ void App::keepCameraAboveGround() {
     if (p.y < lowest) state_.camera.position.y = static_cast<float>(lowest);
 }
 
-// The GUI is built first (its edits apply to this frame), then the renderer draws the frame in
-// its order with the GUI as the last pass.
-void App::renderFrame(bool drawGui) {
-    ID3D11DeviceContext* context = gpu_->device.context();
-    const RendererStatus status = gpu_->renderer.status(state_);
-    std::vector<std::string> devices = hidDevices_.connectedNames();
-    for (int i = 0; i < xinputPads_.connectedCount(); ++i) devices.push_back("Xbox pad (XInput)");
-    const FrameTargets& targets = gpu_->renderer.targets();
-    GuiModel model{state_,
-                   FrameStats{timer_.deltaSeconds() * 1000.0, timer_.framesPerSecond(), targets.width(), targets.height(), gpu_->device.adapterName()},
-                   gpu_->renderer.profiler().timings(),
-                   frameTimes_,
-                   gpu_->shaders.errors(),
-                   gpu_->shaders.sourceCompiler() ? gpu_->shaders.sourceCompiler()->name() : std::string(),
-                   std::move(devices),
-                   notice_,
-                   noticeIsError_,
-                   status.exposure,
-                   status.atmosphereProgress,
-                   status.cloudTableProgress,
-                   status.cloudBlending};
-    const GuiRequests requests = gpu_->overlay->build(model);
-    const auto gui = [&](ID3D11RenderTargetView* output) { gpu_->overlay->render(context, output); };
-    gpu_->renderer.render(state_, FrameTime{timer_.totalSeconds(), timer_.deltaSeconds()}, options_.headless, outputTarget(),
-                     drawGui ? std::function<void(ID3D11RenderTargetView*)>(gui) : nullptr);
-    handleRequests(requests);
-}
-
-void App::captureFrame(const std::string& name) {
-    ID3D11Device* device = gpu_->device.device();
-    ID3D11DeviceContext* context = gpu_->device.context();
-    const FrameTargets& targets = gpu_->renderer.targets();
-    CaptureDescription d;
-    const Camera camera = gpu_->renderer.viewCamera(state_);
-    d.view = camera.view();
-    d.projection = camera.projection(static_cast<float>(targets.width()) / static_cast<float>(targets.height()));
-    d.directionToSun = state_.sun.direction();
-    d.settings = stateToJson(state_).dump(2);
-    d.adapter = gpu_->device.describe();
-    d.implementation = implementationId(gpu_->device.implementation());
-    d.frame = static_cast<int>(timer_.frameCount());
-    d.techniques = gpu_->renderer.captureAttributes(state_);
-    writeCapture(options_.capturePng(name), options_.captureExr(name), readTexture2D(device, context, outputTexture()),
-                 readTexture2D(device, context, targets.hdr().texture.Get()), d);
-    log::info("captured " + options_.capturePng(name).string() + " and " + options_.captureExr(name).string());
-}
-
-void App::captureShot() {
-    const std::string name = "shot-" + std::to_string(shotsTaken_ + 1);
-    try {
-        captureFrame(name);
-        ++shotsTaken_;
-        setNotice("captured " + options_.capturePng(name).string(), false);
-    } catch (const Error& e) {
-        setNotice(e.what(), true);
-        log::error(e.what());
-    }
-}
-
-int App::runBenchmark(const BenchmarkPlan& plan) {
-    ensureWritable(options_.benchmarkResults());
-    log::info("benchmark '" + plan.name + "': " + std::to_string(plan.scenarios.size()) + " scenarios, " + std::to_string(plan.warmupFrames) +
-              " warm-up and " + std::to_string(plan.measuredFrames) + " measured frames each, on " + gpu_->device.describe());
-    const auto scratch = std::filesystem::temp_directory_path() / ("firmament-benchmark-" + std::to_string(GetCurrentProcessId()));
-    const BenchmarkRun run = firmament::runBenchmark(gpu_->renderer, gpu_->device.context(), plan, scratch);
-    std::error_code ec;
-    std::filesystem::remove_all(scratch, ec);
-    const BenchmarkInfo info{kFirmamentVersion, gpu_->device.describe(), implementationId(gpu_->device.implementation()),
-                             options_.benchmark ? options_.benchmark->string() : std::string()};
-    const std::string text = benchmarkReport(plan, run.results, run.tables, info).dump(2) + "\n";
-    writeFileText(options_.benchmarkResults(), text);
-    std::fputs(benchmarkTable(plan, run.results, run.tables).c_str(), stdout);
-    std::printf("\nbenchmark results written to %s\n", options_.benchmarkResults().string().c_str());
-    std::fflush(stdout);
-    return 0;
-}
-
-void App::printTimings() {
-    GpuProfiler& profiler = gpu_->renderer.profiler();
-    profiler.flush();
-    std::printf("GPU time per pass over %llu frames at %dx%d on %s:\n", static_cast<unsigned long long>(timer_.frameCount()),
-                gpu_->renderer.targets().width(), gpu_->renderer.targets().height(), gpu_->device.describe().c_str());
-    std::printf("  %-24s %10s %10s %10s\n", "pass", "mean ms", "min ms", "max ms");
-    for (const PassTiming& t : profiler.timings())
-        std::printf("  %-24s %10.3f %10.3f %10.3f\n", t.name.c_str(), t.meanMs, t.minMs, t.maxMs);
-    if (deviceLosses_ > 0)
-        std::printf("  (the device was lost %d time%s: these are the frames since it was last made again)\n", deviceLosses_,
-                    deviceLosses_ == 1 ? "" : "s");
-    if (profiler.disjointFrames())
-        std::printf("  (%llu frames had unreliable timestamps and were left out)\n", static_cast<unsigned long long>(profiler.disjointFrames()));
-    std::fflush(stdout);
+void App::recoverFromDeviceLoss(const std::string& why) {
+    const auto start = std::chrono::steady_clock::now();
+    const int width = gpu_->renderer.targets().width();
+    const int height = gpu_->renderer.targets().height();
+    log::warning("the Direct3D device was lost after frame " + std::to_string(timer_.frameCount()) + " (" + why +
+                 "): making every GPU resource again; the settings and the camera are kept");
+    gpu_.reset();  // the old device's objects go first, the GUI's context with them
+    gpu_ = std::make_unique<DeviceResources>(options_, openShaderFolder(options_), tableStorage(options_), window_->handle(), width, height);
+    ++deviceLosses_;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f s", seconds);
+    log::info("device recreated in " + std::string(text) + " (loss " + std::to_string(deviceLosses_) + "); rendering goes on");
+    setNotice("the Direct3D device was lost (" + why + ") and made again", true);
 }
 
 }  // namespace firmament

@@ -1,16 +1,18 @@
 #pragma once
 // The program: the window, the device and swap chain, input, the frame loop, flights,
 // captures and benchmarks. The frame itself, every technique and its order, is the Renderer's.
+// Its members are defined by job: the loop (App.cpp), input bindings (AppInput.cpp), one frame
+// and its GUI model (AppFrame.cpp), captures (AppCaptures.cpp), the benchmark and printed
+// timings (AppBenchmark.cpp); what is made on the device is DeviceResources; a soak's driver
+// is SoakRun.
 #include "app/BenchmarkPlan.h"
 #include "app/CaptureBatch.h"
 #include "app/CommandLine.h"
+#include "app/DeviceResources.h"
 #include "app/FlightPath.h"
 #include "app/SoakRun.h"
 #include "app/StepTimer.h"
 #include "app/Window.h"
-#include "gpu/Device.h"
-#include "gpu/ShaderLibrary.h"
-#include "gpu/SwapChain.h"
 #include "input/HidDevices.h"
 #include "input/KeyboardMouse.h"
 #include "input/XInputPads.h"
@@ -23,23 +25,6 @@
 #include <memory>
 
 namespace firmament {
-
-// Everything made on the Direct3D device, made in this order and destroyed in the reverse: the
-// device, the shader library, the swap chain (none when headless), the renderer with every
-// technique and its tables (loaded from the cache where they are there) and the GUI. After a
-// device loss (DXGI_ERROR_DEVICE_REMOVED or _RESET) the App destroys it and makes it again,
-// whole; what lives outside it (the settings and camera, the window, input, the flight and the
-// clock) is kept.
-struct DeviceResources {
-    DeviceResources(const Options& options, std::unique_ptr<ShaderCompiler> precompiled, const TableStorage& storage, HWND window,
-                    int width, int height);  // throws Error
-
-    Device device;
-    ShaderLibrary shaders;
-    std::unique_ptr<SwapChain> swapChain;  // null when headless
-    Renderer renderer;
-    std::unique_ptr<Overlay> overlay;
-};
 
 class App {
 public:
