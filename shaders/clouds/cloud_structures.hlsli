@@ -4,6 +4,11 @@
 // under the rules of common/shared_structures.hlsli.
 #include "common/shared_structures.hlsli"
 
+// The fragments one pixel's resolve sorts and blends (clouds/resolve_fragments.hlsl); the
+// farthest beyond it are dropped. The lists' pool holds this many per pixel at first
+// (src/clouds/VolumeBlendingPass.h).
+static const uint kMaxPixelFragments = 32;
+
 // The cell grid, the density map and the particles' generation (clouds/cloud_field.hlsli;
 // docs/clouds.md). Built by CloudField::constants().
 struct CloudFieldConstants {

@@ -7,6 +7,7 @@
 // blends it. The head texture has one row more than the target, whose first texels count:
 // (0, height) the nodes asked for (those past the pool's capacity are dropped), (1, height) the
 // fragments the resolve drops beyond kMaxPixelFragments in one pixel: two views bound, not three.
+#include "clouds/cloud_structures.hlsli"
 #include "clouds/volume_blending.hlsli"
 
 struct FragmentNode {
@@ -18,8 +19,6 @@ struct FragmentNode {
 };
 
 static const uint kNoFragment = 0xffffffffu;
-// The fragments one pixel's resolve sorts and blends; the farthest beyond it are dropped.
-static const uint kMaxPixelFragments = 32;
 
 #ifdef FRAGMENT_LISTS_APPEND
 RWTexture2D<uint> fragmentHeads : register(u1);

@@ -121,7 +121,7 @@ std::string Clouds::blendingStatus() const {
     if (blending_.path() == ParticleBlending::PerPixelLists) {
         if (const std::optional<VolumeBlendingPass::Overflow> o = blending_.latestOverflow())
             status += ": " + std::to_string(o->nodesAskedFor) + " fragments in a pool of " + std::to_string(blending_.nodeCapacity()) + ", " +
-                      std::to_string(o->nodesDropped) + " dropped, " + std::to_string(o->fragmentsDropped) + " past a pixel's limit of 32";
+                      std::to_string(o->nodesDropped) + " dropped, " + std::to_string(o->fragmentsDropped) + " past a pixel's limit of " + std::to_string(gpu::kMaxPixelFragments);
     }
     return status;
 }

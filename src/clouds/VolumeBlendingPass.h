@@ -8,6 +8,7 @@
 //  - rasterizer-ordered views: the stored fragment's colour and extinction (RGBA32F) and extent
 //    (RG32F); the particles' pixel shader merges in primitive order and sends what is pushed behind
 //    to the target; the resolve blends the stored one.
+#include "clouds/CloudStructures.h"
 #include "clouds/ParticleBlending.h"
 #include "gpu/Buffers.h"
 #include "gpu/ConstantBuffer.h"
@@ -31,12 +32,12 @@ class VolumeBlendingPass {
 public:
     explicit VolumeBlendingPass(ID3D11Device* device);
 
-    // The lists' pool starts with room for a pixel's whole resolve limit (32 fragments) in every
+    // The lists' pool starts with room for a pixel's whole resolve limit (gpu::kMaxPixelFragments) in every
     // pixel, up to kInitialPoolBytes. When a frame asks for more, the pool grows a few frames
     // later to 5/4 of what was asked, up to kMaxPoolBytes; what does not fit is dropped (the
     // last particles drawn, the nearest) and counted. The first lists of a new pool (at start, at
     // a new size) are checked at once instead: see firstBuildOverflowed.
-    static constexpr unsigned kNodesPerPixel = 32;
+    static constexpr unsigned kNodesPerPixel = gpu::kMaxPixelFragments;
     static constexpr size_t kInitialPoolBytes = size_t{128} << 20;
     static constexpr size_t kMaxPoolBytes = size_t{512} << 20;
 
@@ -64,7 +65,7 @@ public:
     size_t memoryBytes() const;
 
     // What did not fit: nodes asked of the pool past its capacity, fragments past one pixel's
-    // resolve limit (kMaxPixelFragments in fragment_lists.hlsli).
+    // resolve limit (kMaxPixelFragments in cloud_structures.hlsli).
     struct Overflow {
         unsigned nodesAskedFor = 0;
         unsigned nodesDropped = 0;

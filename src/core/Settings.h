@@ -36,6 +36,15 @@ public:
     virtual void choiceIndex(std::string_view key, int& index, std::span<const std::string_view> names,
                              std::string_view label) = 0;
 
+    // A power of two, `smallest << i` for the i-th of `names`, chosen by name: the value shows as
+    // the smallest choice not below it.
+    void powerOfTwoChoice(std::string_view key, int& value, int smallest, std::span<const std::string_view> names, std::string_view label) {
+        int index = 0;
+        while (index + 1 < static_cast<int>(names.size()) && (smallest << index) < value) ++index;
+        choiceIndex(key, index, names, label);
+        value = smallest << index;
+    }
+
     template <typename Enum>
     void choice(std::string_view key, Enum& value, std::span<const std::string_view> names, std::string_view label) {
         int index = static_cast<int>(value);

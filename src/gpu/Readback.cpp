@@ -28,6 +28,36 @@ int bytesPerPixel(DXGI_FORMAT format) {
     }
 }
 
+namespace {
+
+// `desc` made the description of a staging copy the CPU reads.
+template <typename Description>
+Description staging(Description desc) {
+    desc.Usage = D3D11_USAGE_STAGING;
+    desc.BindFlags = 0;
+    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
+    desc.MiscFlags = 0;
+    return desc;
+}
+
+// Subresource 0 of `source` copied into `copy` (its staging twin), mapped, and its `slices` x
+// `rows` rows of `rowBytes` each copied out tightly packed (the mapping's pitches dropped).
+std::vector<std::uint8_t> readRows(ID3D11DeviceContext* context, ID3D11Resource* copy, ID3D11Resource* source, size_t rowBytes, int rows,
+                                   int slices, const char* what) {
+    context->CopySubresourceRegion(copy, 0, 0, 0, 0, source, 0, nullptr);
+    D3D11_MAPPED_SUBRESOURCE mapped{};
+    check(context->Map(copy, 0, D3D11_MAP_READ, 0, &mapped), what);
+    std::vector<std::uint8_t> bytes(rowBytes * rows * slices);
+    const auto* from = static_cast<const std::uint8_t*>(mapped.pData);
+    for (int z = 0; z < slices; ++z)
+        for (int y = 0; y < rows; ++y)
+            std::memcpy(bytes.data() + (static_cast<size_t>(z) * rows + y) * rowBytes, from + z * mapped.DepthPitch + y * mapped.RowPitch, rowBytes);
+    context->Unmap(copy, 0);
+    return bytes;
+}
+
+}  // namespace
+
 ReadbackImage readTexture2D(ID3D11Device* device, ID3D11DeviceContext* context, ID3D11Texture2D* texture) {
     D3D11_TEXTURE2D_DESC desc{};
     texture->GetDesc(&desc);
@@ -35,26 +65,14 @@ ReadbackImage readTexture2D(ID3D11Device* device, ID3D11DeviceContext* context, 
     image.width = static_cast<int>(desc.Width);
     image.height = static_cast<int>(desc.Height);
     image.bytesPerPixel = bytesPerPixel(desc.Format);
-
     desc.MipLevels = 1;
     desc.ArraySize = 1;
     desc.SampleDesc = {1, 0};
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    desc.MiscFlags = 0;
-    ComPtr<ID3D11Texture2D> staging;
-    check(device->CreateTexture2D(&desc, nullptr, &staging), "CreateTexture2D (staging)");
-    context->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, texture, 0, nullptr);
-
-    D3D11_MAPPED_SUBRESOURCE mapped{};
-    check(context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), "Map (texture read-back)");
-    const size_t rowBytes = static_cast<size_t>(image.width) * image.bytesPerPixel;
-    image.bytes.resize(rowBytes * image.height);
-    for (int y = 0; y < image.height; ++y)
-        std::memcpy(image.bytes.data() + y * rowBytes, static_cast<const std::uint8_t*>(mapped.pData) + y * mapped.RowPitch,
-                    rowBytes);
-    context->Unmap(staging.Get(), 0);
+    desc = staging(desc);
+    ComPtr<ID3D11Texture2D> copy;
+    check(device->CreateTexture2D(&desc, nullptr, &copy), "CreateTexture2D (staging)");
+    image.bytes = readRows(context, copy.Get(), texture, static_cast<size_t>(image.width) * image.bytesPerPixel, image.height, 1,
+                           "Map (texture read-back)");
     return image;
 }
 
@@ -66,46 +84,23 @@ ReadbackVolume readTexture3D(ID3D11Device* device, ID3D11DeviceContext* context,
     volume.height = static_cast<int>(desc.Height);
     volume.depth = static_cast<int>(desc.Depth);
     volume.bytesPerPixel = bytesPerPixel(desc.Format);
-
     desc.MipLevels = 1;
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    desc.MiscFlags = 0;
-    ComPtr<ID3D11Texture3D> staging;
-    check(device->CreateTexture3D(&desc, nullptr, &staging), "CreateTexture3D (staging)");
-    context->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, texture, 0, nullptr);
-
-    D3D11_MAPPED_SUBRESOURCE mapped{};
-    check(context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), "Map (volume read-back)");
-    const size_t rowBytes = static_cast<size_t>(volume.width) * volume.bytesPerPixel;
-    volume.bytes.resize(rowBytes * volume.height * volume.depth);
-    for (int z = 0; z < volume.depth; ++z)
-        for (int y = 0; y < volume.height; ++y)
-            std::memcpy(volume.bytes.data() + (static_cast<size_t>(z) * volume.height + y) * rowBytes,
-                        static_cast<const std::uint8_t*>(mapped.pData) + z * mapped.DepthPitch + y * mapped.RowPitch, rowBytes);
-    context->Unmap(staging.Get(), 0);
+    desc = staging(desc);
+    ComPtr<ID3D11Texture3D> copy;
+    check(device->CreateTexture3D(&desc, nullptr, &copy), "CreateTexture3D (staging)");
+    volume.bytes = readRows(context, copy.Get(), texture, static_cast<size_t>(volume.width) * volume.bytesPerPixel, volume.height, volume.depth,
+                            "Map (volume read-back)");
     return volume;
 }
 
 std::vector<std::uint8_t> readBuffer(ID3D11Device* device, ID3D11DeviceContext* context, ID3D11Buffer* buffer) {
     D3D11_BUFFER_DESC desc{};
     buffer->GetDesc(&desc);
-    desc.Usage = D3D11_USAGE_STAGING;
-    desc.BindFlags = 0;
-    desc.CPUAccessFlags = D3D11_CPU_ACCESS_READ;
-    desc.MiscFlags = 0;
+    desc = staging(desc);
     desc.StructureByteStride = 0;
-    ComPtr<ID3D11Buffer> staging;
-    check(device->CreateBuffer(&desc, nullptr, &staging), "CreateBuffer (staging)");
-    context->CopyResource(staging.Get(), buffer);
-
-    D3D11_MAPPED_SUBRESOURCE mapped{};
-    check(context->Map(staging.Get(), 0, D3D11_MAP_READ, 0, &mapped), "Map (buffer read-back)");
-    std::vector<std::uint8_t> bytes(desc.ByteWidth);
-    std::memcpy(bytes.data(), mapped.pData, bytes.size());
-    context->Unmap(staging.Get(), 0);
-    return bytes;
+    ComPtr<ID3D11Buffer> copy;
+    check(device->CreateBuffer(&desc, nullptr, &copy), "CreateBuffer (staging)");
+    return readRows(context, copy.Get(), buffer, desc.ByteWidth, 1, 1, "Map (buffer read-back)");
 }
 
 }  // namespace firmament

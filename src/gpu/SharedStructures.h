@@ -8,6 +8,7 @@
 namespace firmament::gpu {
 
 using float4 = glm::vec4;
+using uint = glm::uint;
 using uint4 = glm::uvec4;
 using float4x4 = glm::mat4;
 

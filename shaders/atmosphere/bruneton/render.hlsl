@@ -12,15 +12,9 @@
 // model's own ground), ps_aerial_perspective over geometry. BrunetonPassConstants.view draws
 // the whole frame, only its right part (the split view), or |this model - the frame already
 // drawn| (the difference view).
-#include "common/fullscreen_triangle.hlsli"
 #include "atmosphere/bruneton/lookup.hlsli"
+#include "atmosphere/render_passes.hlsli"
 
-cbuffer FrameBuffer : register(b0) {
-    FrameConstants frame;
-};
-cbuffer AtmosphereBuffer : register(b1) {
-    AtmosphereConstants atmosphere;
-};
 cbuffer BrunetonBuffer : register(b2) {
     BrunetonConstants bruneton;
 };
@@ -28,21 +22,14 @@ cbuffer PassBuffer : register(b3) {
     BrunetonPassConstants composition;
 };
 
-Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before the atmosphere (ps_aerial_perspective)
-Texture2D<float> sceneDepth : register(t1);
 Texture2D<float4> transmittanceTable : register(t2);
 Texture2D<float4> irradianceTable : register(t3);
 Texture3D<float4> inscatterTable : register(t4);
 Texture2D<float4> otherModel : register(t5);     // the difference view: the frame the other model drew
-SamplerState linearClamp : register(s0);
 
 static const uint kWholeFrame = 0;
 static const uint kSplitRight = 1;
 static const uint kDifference = 2;
-
-FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
-    return fullscreenTriangle(vertexId);
-}
 
 // In-scattered radiance per unit sun irradiance from the table's RGBA.
 float3 inscatteredRadiance(float4 rayleighMie, float nu) {

@@ -9,26 +9,16 @@
 // high-order table. Without light shafts nothing is occluded, so Occluded differs from
 // Unoccluded only with single scattering from the table: then the multiple scattering table
 // gives all orders in one look-up (docs/atmosphere.md, "Render modes").
-#include "atmosphere/atmosphere_structures.hlsli"
-#include "common/fullscreen_triangle.hlsli"
+#include "atmosphere/render_passes.hlsli"
 
-cbuffer FrameBuffer : register(b0) {
-    FrameConstants frame;
-};
-cbuffer AtmosphereBuffer : register(b1) {
-    AtmosphereConstants atmosphere;
-};
 cbuffer YusovPassBuffer : register(b2) {
     YusovPassConstants scattering;
 };
 
-Texture2D<float4> sceneRadiance : register(t0);  // the HDR frame before this pass (ps_aerial_perspective)
-Texture2D<float> sceneDepth : register(t1);
 Texture2D<float4> netDensityLut : register(t2);
 Texture3D<float4> singleScatteringLut : register(t3);
 Texture3D<float4> highOrderScatteringLut : register(t4);
 Texture3D<float4> multipleScatteringLut : register(t5);
-SamplerState linearClamp : register(s0);
 
 #include "atmosphere/yusov/view_ray.hlsli"
 
@@ -38,10 +28,6 @@ float3 scatteredLight(ViewRay ray, float3 sunDir) {
 }
 
 #include "atmosphere/yusov/shade_pixel.hlsli"
-
-FullscreenVertex vs_main(uint vertexId : SV_VertexID) {
-    return fullscreenTriangle(vertexId);
-}
 
 float4 ps_sky(FullscreenVertex input) : SV_Target {
     float depth = sceneDepth.Load(int3(int2(input.position.xy), 0));
