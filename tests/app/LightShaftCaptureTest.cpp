@@ -20,7 +20,6 @@
 #include "support/Process.h"
 #include "support/TestPaths.h"
 
-#include <Imath/half.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -2,10 +2,10 @@
 // left half and Bruneton's on its right, pixel for pixel; a difference frame is the absolute
 // difference of the two. All compared in the captured EXR, before tone mapping.
 #include "core/ExrImage.h"
+#include "support/CaptureRadiance.h"
 #include "support/HeadlessCapture.h"
 #include "support/TestPaths.h"
 
-#include <Imath/half.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,12 +29,6 @@ ExrFile capture(const std::filesystem::path& folder, const std::string& name, st
     return readExr(folder / (name + ".exr"));
 }
 
-float channel(const ExrFile& file, int x, int y, int c) {
-    Imath::half h;
-    h.setBits(file.image.halfBits[(static_cast<size_t>(y) * kWidth + x) * 4 + c]);
-    return static_cast<float>(h);
-}
-
 TEST(ModelComparison, SplitAndDifferenceViewsAreMadeOfBothModels) {
     const auto folder = std::filesystem::temp_directory_path() / "firmament-model-comparison";
     std::filesystem::remove_all(folder);
@@ -49,10 +43,10 @@ TEST(ModelComparison, SplitAndDifferenceViewsAreMadeOfBothModels) {
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)
             for (int c = 0; c < 3; ++c) {
-                const float left = channel(yusov, x, y, c), right = channel(bruneton, x, y, c);
-                ASSERT_EQ(channel(split, x, y, c), x < kWidth / 2 ? left : right) << "split pixel " << x << "," << y;
+                const float left = exrChannel(yusov, x, y, c), right = exrChannel(bruneton, x, y, c);
+                ASSERT_EQ(exrChannel(split, x, y, c), x < kWidth / 2 ? left : right) << "split pixel " << x << "," << y;
                 const float expected = std::abs(left - right);
-                ASSERT_NEAR(channel(difference, x, y, c), expected, 2e-3f * std::max(left, right) + 1e-6f) << "difference pixel " << x << "," << y;
+                ASSERT_NEAR(exrChannel(difference, x, y, c), expected, 2e-3f * std::max(left, right) + 1e-6f) << "difference pixel " << x << "," << y;
                 if (expected > 1e-3f * std::max(left, right)) ++differing;
             }
     // The models differ somewhere (the ground, which only Bruneton's model lights itself): the
@@ -79,8 +73,8 @@ TEST(ModelComparison, SplitViewLightsTheTerrainByEachModel) {
     for (int y = kHeight / 2; y < kHeight; ++y)  // the lower half: terrain
         for (int x = 0; x < kWidth; ++x)
             for (int c = 0; c < 3; ++c) {
-                const float left = channel(yusov, x, y, c), right = channel(bruneton, x, y, c);
-                ASSERT_EQ(channel(split, x, y, c), x < kWidth / 2 ? left : right) << "split pixel " << x << "," << y;
+                const float left = exrChannel(yusov, x, y, c), right = exrChannel(bruneton, x, y, c);
+                ASSERT_EQ(exrChannel(split, x, y, c), x < kWidth / 2 ? left : right) << "split pixel " << x << "," << y;
                 if (std::abs(left - right) > 1e-3f * std::max(left, right)) ++terrainDiffers;
             }
     EXPECT_GT(terrainDiffers, kWidth * kHeight / 10);  // the two models do light it differently

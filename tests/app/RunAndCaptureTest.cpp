@@ -3,11 +3,11 @@
 #include "core/ExrImage.h"
 #include "core/PngImage.h"
 #include "postfx/ToneMappingCurves.h"
+#include "support/CaptureRadiance.h"
 #include "support/HeadlessCapture.h"
 #include "support/Process.h"
 #include "support/TestPaths.h"
 
-#include <Imath/half.h>
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -45,12 +45,6 @@ std::vector<std::wstring> withCheapScene(std::vector<std::wstring> arguments) {
     return arguments;
 }
 
-Imath::half halfAt(const ExrFile& file, int x, int y, int channel) {
-    Imath::half h;
-    h.setBits(file.image.halfBits[(static_cast<size_t>(y) * file.image.width + x) * 4 + channel]);
-    return h;
-}
-
 // With the orientation grid, light scattering and the terrain off nothing draws: the HDR frame holds the background
 // radiance everywhere, and the PNG, without the GUI (left out by default), is uniform. Its
 // colour is the background tone mapped with the default settings (Uncharted 2, auto
@@ -83,10 +77,10 @@ TEST(HeadlessRun, CapturesAPngAndASelfDescribingExr) {
     const ExrFile file = readExr(exr);
     ASSERT_EQ(file.image.width, 320);
     ASSERT_EQ(file.image.height, 200);
-    EXPECT_NEAR(static_cast<float>(halfAt(file, 319, 199, 0)), 0.02f, 1e-4f);
-    EXPECT_NEAR(static_cast<float>(halfAt(file, 319, 199, 2)), 0.035f, 1e-4f);
+    EXPECT_NEAR(exrChannel(file, 319, 199, 0), 0.02f, 1e-4f);
+    EXPECT_NEAR(exrChannel(file, 319, 199, 2), 0.035f, 1e-4f);
 
-    const glm::dvec3 background(halfAt(file, 0, 0, 0), halfAt(file, 0, 0, 1), halfAt(file, 0, 0, 2));
+    const glm::dvec3 background(exrChannel(file, 0, 0, 0), exrChannel(file, 0, 0, 1), exrChannel(file, 0, 0, 2));
     const double averageLuminance = tonemap::kLogLuminanceDelta + tonemap::relativeLuminance(background);
     const double exposure = tonemap::autoExposure(averageLuminance, 0.18, 1.0);
     const glm::dvec3 display = tonemap::toDisplay(background, {ToneMapOperator::Uncharted2, exposure, 3.0, 1.0});
@@ -132,10 +126,10 @@ TEST(HeadlessRun, DrawsTheOrientationGridFromASettingsFile) {
     EXPECT_NE(run.output.find("Orientation grid"), std::string::npos) << run.output;
     const ExrFile file = readExr(folder / "grid.exr");
     // Top row: 22.5 - 10 = 12.5 degrees above the horizon: sky, bluer than red.
-    EXPECT_GT(static_cast<float>(halfAt(file, 128, 0, 2)), static_cast<float>(halfAt(file, 128, 0, 0)));
+    EXPECT_GT(exrChannel(file, 128, 0, 2), exrChannel(file, 128, 0, 0));
     // Bottom row: ground, lit by a sun 45 degrees high: albedo * (3 sin 45 + 0.15), hazed
     // by exp(-distance / 60 km) over the 930 m to the ground 32.5 degrees below.
-    const float red = static_cast<float>(halfAt(file, 128, 255, 0));
+    const float red = exrChannel(file, 128, 255, 0);
     const float groundOrLine = 0.18f * (3.0f * std::sin(glm::radians(45.0f)) + 0.15f);
     EXPECT_GT(red, groundOrLine * 0.9f);
     EXPECT_LT(red, 0.60f * (3.0f * std::sin(glm::radians(45.0f)) + 0.15f));

@@ -8,9 +8,9 @@
 // which must then draw the same sky.
 #include "core/ExrImage.h"
 #include "reference/ReferenceAtmosphere.h"
+#include "support/CaptureRadiance.h"
 #include "support/HeadlessCapture.h"
 
-#include <Imath/half.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,11 +95,7 @@ std::vector<SkySample> captureSky(const std::string& tag, const std::vector<std:
             const glm::dvec3 viewDir = glm::normalize(glm::dvec3(farPoint) / static_cast<double>(farPoint.w));
             if (glm::dot(viewDir, sunDir) > std::cos(glm::radians(3.0))) continue;  // the sun's disc and its glare
             glm::dvec3 captured;
-            for (int ch = 0; ch < 3; ++ch) {
-                Imath::half h;
-                h.setBits(file.image.halfBits[(static_cast<size_t>(y) * width + x) * 4 + ch]);
-                captured[ch] = static_cast<float>(h);
-            }
+            for (int ch = 0; ch < 3; ++ch) captured[ch] = exrChannel(file, x, y, ch);
             samples.push_back({captured, 2.0 * reference.singleScattering(camera, viewDir, sunDir), viewDir});
         }
     std::filesystem::remove_all(folder);

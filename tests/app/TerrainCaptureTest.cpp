@@ -2,9 +2,9 @@
 // background pixel below the horizon), nothing is NaN or Inf at any sun angle with either
 // atmosphere model, and the terrain's views and the cascades' tint change the picture.
 #include "core/ExrImage.h"
+#include "support/CaptureRadiance.h"
 #include "support/HeadlessCapture.h"
 
-#include <Imath/half.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,11 +44,7 @@ ExrFile captureFrame(const std::string& name, const std::vector<std::wstring>& s
 
 glm::vec3 pixel(const ExrFile& file, int x, int y) {
     glm::vec3 value;
-    for (int ch = 0; ch < 3; ++ch) {
-        Imath::half h;
-        h.setBits(file.image.halfBits[(static_cast<size_t>(y) * file.image.width + x) * 4 + ch]);
-        value[ch] = static_cast<float>(h);
-    }
+    for (int ch = 0; ch < 3; ++ch) value[ch] = exrChannel(file, x, y, ch);
     return value;
 }
 

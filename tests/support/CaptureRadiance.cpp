@@ -8,6 +8,21 @@
 
 namespace firmament::test {
 
+float exrChannel(const ExrFile& file, int x, int y, int c) {
+    Imath::half h;
+    h.setBits(file.image.halfBits[(static_cast<size_t>(y) * file.image.width + x) * 4 + c]);
+    return static_cast<float>(h);
+}
+
+std::vector<float> exrRgb(const ExrFile& file) {
+    std::vector<float> rgb;
+    rgb.reserve(static_cast<size_t>(file.image.width) * file.image.height * 3);
+    for (int y = 0; y < file.image.height; ++y)
+        for (int x = 0; x < file.image.width; ++x)
+            for (int c = 0; c < 3; ++c) rgb.push_back(exrChannel(file, x, y, c));
+    return rgb;
+}
+
 std::vector<float> captureRadiance(const std::filesystem::path& folder, const std::string& name, const std::vector<std::wstring>& settings, int width,
                                    int height, int frames) {
     HeadlessCapture capture;
@@ -19,16 +34,7 @@ std::vector<float> captureRadiance(const std::filesystem::path& folder, const st
     const ProcessResult run = captureHeadless(capture);
     EXPECT_EQ(run.exitCode, 0u) << run.output;
     if (run.exitCode != 0) return {};
-    const ExrFile file = readExr(folder / (name + ".exr"));
-    std::vector<float> rgb;
-    rgb.reserve(static_cast<size_t>(width) * height * 3);
-    for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i)
-        for (int c = 0; c < 3; ++c) {
-            Imath::half h;
-            h.setBits(file.image.halfBits[i * 4 + c]);
-            rgb.push_back(static_cast<float>(h));
-        }
-    return rgb;
+    return exrRgb(readExr(folder / (name + ".exr")));
 }
 
 }  // namespace firmament::test

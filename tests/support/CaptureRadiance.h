@@ -5,7 +5,16 @@
 #include <string>
 #include <vector>
 
+namespace firmament {
+struct ExrFile;
+}
+
 namespace firmament::test {
+
+// Channel `c` (0 R, 1 G, 2 B, 3 A) of pixel (x, y) of a captured EXR (half floats), as a float.
+float exrChannel(const ExrFile& file, int x, int y, int c);
+// The captured EXR's RGB, row by row.
+std::vector<float> exrRgb(const ExrFile& file);
 
 // The last of `frames` frames at width x height with `settings` (--set assignments) into
 // folder/name.png and .exr. The EXR's RGB, row by row; empty (with a test failure naming the
