@@ -5,6 +5,7 @@
 #include "AtmosphereQueries.h"
 #include "TableFilesCheck.h"
 #include "WarpDevice.h"
+#include "YusovTables.h"
 #include "atmosphere/yusov/YusovPrecomputation.h"
 #include "atmosphere/yusov/YusovTableFiles.h"
 #include "gpu/CommonStates.h"
@@ -24,7 +25,6 @@ namespace {
 using atmosphere::ReferenceAtmosphere;
 using atmosphere::ScatteringCoordinates;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadianceFloor = 5e-4;  // per unit sun irradiance
 
 // Relative error with a floor: differences below `floor` (absolute) count as zero.
@@ -37,12 +37,7 @@ protected:
     // Single scattering only unless `orders` says otherwise: most tests need no more, and the
     // higher orders take most of the time on the WARP device.
     std::unique_ptr<YusovPrecomputation> precompute(LutResolution resolution, int orders = 1) {
-        AtmosphereParameters p;
-        p.lut = LutDimensions::of(resolution);
-        p.scatteringOrders = orders;
-        auto tables = std::make_unique<YusovPrecomputation>(device(), p);
-        tables->runAll(context(), *productShaderLibrary);
-        return tables;
+        return computeYusovTables(device(), context(), *productShaderLibrary, resolution, orders);
     }
 
     // Runs lookup_probe.hlsl's `entry` over the queries.
@@ -170,9 +165,7 @@ TEST_F(AtmosphereTables, NoNanOrInfAnywhere) {
     const double R = tables->parameters().earthRadius;
     const std::vector<Query> queries = extremeQueries(R);
     for (const char* entry : {"scattering", "transmittance"}) {
-        const auto got = probe(*tables, queries, entry);
-        for (size_t i = 0; i < got.size(); ++i)
-            for (int ch = 0; ch < 3; ++ch) ASSERT_TRUE(std::isfinite(got[i][ch]) && got[i][ch] >= 0.0f) << entry << " query " << i;
+        expectFiniteAndNotNegative(probe(*tables, queries, entry), entry);
     }
 }
 
@@ -201,19 +194,10 @@ TEST_F(AtmosphereTables, HighOrderScatteringMatchesMonteCarlo) {
     const auto tables = precompute(LutResolution::Medium, 4);
     const AtmosphereParameters& p = tables->parameters();
     const ReferenceAtmosphere reference(p);
-    struct Case { double altitude, viewElevation, sunElevation, azimuth; };
-    const Case cases[] = {{2.0, 30.0, 30.0, 90.0}, {2.0, 60.0, 10.0, 180.0}, {2.0, 5.0, 45.0, 40.0},
-                          {5000.0, 20.0, 60.0, 120.0}, {30000.0, 10.0, 20.0, 60.0}, {2.0, 80.0, 2.0, 0.0}};
     constexpr double kBound = 0.20;
-    std::vector<Query> queries;
-    std::vector<ReferenceAtmosphere::Estimate> estimates;
-    for (const Case& c : cases) {
-        const double v = c.viewElevation * kPi / 180.0, s = c.sunElevation * kPi / 180.0, a = c.azimuth * kPi / 180.0;
-        const glm::dvec3 position(0.0, p.earthRadius + c.altitude, 0.0), viewDir(std::cos(v), std::sin(v), 0.0);
-        const glm::dvec3 sunDir(std::cos(s) * std::cos(a), std::sin(s), std::cos(s) * std::sin(a));
-        queries.push_back({glm::vec4(glm::vec3(position), 0.0f), glm::vec4(glm::vec3(viewDir), 0.0f), glm::vec4(glm::vec3(sunDir), 0.0f)});
-        estimates.push_back(reference.highOrderScattering(position, viewDir, sunDir, 4, 20000, 11u + static_cast<unsigned>(estimates.size())));
-    }
+    const HighOrderCases cases = highOrderCases(reference, p);
+    const std::vector<Query>& queries = cases.queries;
+    const std::vector<ReferenceAtmosphere::Estimate>& estimates = cases.estimates;
     const auto got = probe(*tables, queries, "scattering", &tables->tables().highOrderScattering);
     for (size_t i = 0; i < queries.size(); ++i) {
         const auto& e = estimates[i];
@@ -246,21 +230,13 @@ TEST_F(AtmosphereTables, HighOrderAndMultipleTablesAtRandomPointsMatchTheReferen
         return table;
     };
     const auto high = asVectors(probe(*tables, queries, "scattering", &tables->tables().highOrderScattering));
-    const HighOrderErrors e = highOrderErrors(reference, high, estimates, kRadianceFloor, set, kShortRay);
-    std::printf("high-order table against Monte Carlo at 200 points: median %.4f, 90th percentile %.4f, largest (rays over 5 km) %.4f\n",
-                e.median, e.ninetieth, e.largestLongRay);
-    EXPECT_LT(e.median, kMedian);
-    EXPECT_LT(e.ninetieth, kNinetieth);
-    EXPECT_LT(e.largestLongRay, kLargest);
+    expectHighOrderErrorsBelow(highOrderErrors(reference, high, estimates, kRadianceFloor, set, kShortRay),
+                               "high-order table against Monte Carlo at 200 points", kMedian, kNinetieth, kLargest);
     // The multiple scattering table, L^(1) + L^H, against the reference's single scattering plus
     // the same estimates.
     const auto multiple = asVectors(probe(*tables, queries, "scattering", &tables->tables().multipleScattering));
-    const HighOrderErrors m = highOrderErrors(reference, multiple, withSingleScattering(reference, queries, estimates), kRadianceFloor, set, kShortRay);
-    std::printf("multiple scattering table at 200 points: median %.4f, 90th percentile %.4f, largest (rays over 5 km) %.4f\n", m.median,
-                m.ninetieth, m.largestLongRay);
-    EXPECT_LT(m.median, kMultipleMedian);
-    EXPECT_LT(m.ninetieth, kMultipleNinetieth);
-    EXPECT_LT(m.largestLongRay, kMultipleLargest);
+    expectHighOrderErrorsBelow(highOrderErrors(reference, multiple, withSingleScattering(reference, queries, estimates), kRadianceFloor, set, kShortRay),
+                               "multiple scattering table at 200 points", kMultipleMedian, kMultipleNinetieth, kMultipleLargest);
 }
 
 // The ambient sky light table (eq. 3, orders 1 to 4, medium tables) at 200 random sun angles,
@@ -291,12 +267,8 @@ TEST_F(AtmosphereTables, AmbientLightAtRandomSunAnglesMatchesMonteCarlo) {
         const int i = std::min(static_cast<int>(x), p.lut.ambientLight - 2);
         table.push_back(glm::mix(texel(i), texel(i + 1), x - i));
     }
-    const Percentiles e = irradianceErrors(reference, queries, table, 4, 500, 1e-3);
-    std::printf("ambient light against Monte Carlo at 200 sun angles: median %.4f, 90th percentile %.4f, largest %.4f\n", e.median,
-                e.ninetieth, e.largest);
-    EXPECT_LT(e.median, kMedian);
-    EXPECT_LT(e.ninetieth, kNinetieth);
-    EXPECT_LT(e.largest, kLargest);
+    expectPercentilesBelow(irradianceErrors(reference, queries, table, 4, 500, 1e-3), "ambient light against Monte Carlo at 200 sun angles", kMedian,
+                           kNinetieth, kLargest);
 }
 
 // The ambient sky light (eq. 3) from full-size tables of single scattering alone, against a

@@ -92,6 +92,14 @@ inline Percentiles percentiles(std::vector<double> errors) {
     return {errors[errors.size() / 2], errors[errors.size() * 9 / 10], errors.back()};
 }
 
+// `e`, printed as `what`'s errors, held below the three bounds.
+inline void expectPercentilesBelow(const Percentiles& e, const char* what, double median, double ninetieth, double largest) {
+    std::printf("%s: median %.4f, 90th percentile %.4f, largest %.4f\n", what, e.median, e.ninetieth, e.largest);
+    EXPECT_LT(e.median, median) << what;
+    EXPECT_LT(e.ninetieth, ninetieth) << what;
+    EXPECT_LT(e.largest, largest) << what;
+}
+
 // `count` random points for the sky's irradiance: altitudes u^2 `maxAltitude`, sun zenith
 // cosines uniform in [-0.2, 1] (below, the sky is dark), the sun at any azimuth.
 inline std::vector<Query> randomIrradianceQueries(const AtmosphereParameters& p, int count, unsigned seed, double maxAltitude) {
@@ -198,6 +206,46 @@ inline HighOrderErrors highOrderErrors(const atmosphere::ReferenceAtmosphere& re
     }
     const Percentiles all = percentiles(errors);
     return {all.median, all.ninetieth, largest};
+}
+
+// `e`, printed as `what`'s errors, held below the three bounds (the largest over the long rays).
+inline void expectHighOrderErrorsBelow(const HighOrderErrors& e, const char* what, double median, double ninetieth, double largestLongRay) {
+    std::printf("%s: median %.4f, 90th percentile %.4f, largest (rays over 5 km) %.4f\n", what, e.median, e.ninetieth, e.largestLongRay);
+    EXPECT_LT(e.median, median) << what;
+    EXPECT_LT(e.ninetieth, ninetieth) << what;
+    EXPECT_LT(e.largestLongRay, largestLongRay) << what;
+}
+
+// Six views at which both models' higher orders are held to Monte Carlo (20000 paths each, orders
+// 2 to 4): from the ground looking up, across and 5 degrees above the horizon, from 5 and 30 km,
+// and near the zenith with the sun 2 degrees up.
+struct HighOrderCases {
+    std::vector<Query> queries;
+    std::vector<atmosphere::ReferenceAtmosphere::Estimate> estimates;
+};
+
+inline HighOrderCases highOrderCases(const atmosphere::ReferenceAtmosphere& reference, const AtmosphereParameters& p) {
+    struct Case {
+        double altitude, viewElevation, sunElevation, azimuth;
+    };
+    const Case cases[] = {{2.0, 30.0, 30.0, 90.0}, {2.0, 60.0, 10.0, 180.0}, {2.0, 5.0, 45.0, 40.0},
+                          {5000.0, 20.0, 60.0, 120.0}, {30000.0, 10.0, 20.0, 60.0}, {2.0, 80.0, 2.0, 0.0}};
+    constexpr double kDegree = 3.14159265358979323846 / 180.0;
+    HighOrderCases out;
+    for (const Case& c : cases) {
+        const double v = c.viewElevation * kDegree, s = c.sunElevation * kDegree, a = c.azimuth * kDegree;
+        const glm::dvec3 position(0.0, p.earthRadius + c.altitude, 0.0), viewDir(std::cos(v), std::sin(v), 0.0);
+        const glm::dvec3 sunDir(std::cos(s) * std::cos(a), std::sin(s), std::cos(s) * std::sin(a));
+        out.queries.push_back({glm::vec4(glm::vec3(position), 0.0f), glm::vec4(glm::vec3(viewDir), 0.0f), glm::vec4(glm::vec3(sunDir), 0.0f)});
+        out.estimates.push_back(reference.highOrderScattering(position, viewDir, sunDir, 4, 20000, 11u + static_cast<unsigned>(out.estimates.size())));
+    }
+    return out;
+}
+
+// No NaN, no infinity and no negative light in any channel of `got` (the probe's `entry`).
+inline void expectFiniteAndNotNegative(const std::vector<glm::vec4>& got, const char* entry) {
+    for (size_t i = 0; i < got.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) ASSERT_TRUE(std::isfinite(got[i][ch]) && got[i][ch] >= 0.0f) << entry << " query " << i;
 }
 
 // The largest channel error relative to the brightest channel of `expected`, or to `floor`

@@ -5,6 +5,7 @@
 #include "AtmosphereQueries.h"
 #include "TableFilesCheck.h"
 #include "WarpDevice.h"
+#include "YusovTables.h"
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"
 #include "atmosphere/bruneton/BrunetonTableFiles.h"
 #include "atmosphere/yusov/YusovPrecomputation.h"
@@ -54,12 +55,7 @@ protected:
     }
 
     std::unique_ptr<YusovPrecomputation> yusov(LutResolution resolution, int orders) {
-        AtmosphereParameters p;
-        p.lut = LutDimensions::of(resolution);
-        p.scatteringOrders = orders;
-        auto tables = std::make_unique<YusovPrecomputation>(device(), p);
-        tables->runAll(context(), *productShaderLibrary);
-        return tables;
+        return computeYusovTables(device(), context(), *productShaderLibrary, resolution, orders);
     }
 
     // bruneton_probe.hlsl's `entry` (inscatter, transmittance, irradiance) at the queries.
@@ -206,12 +202,8 @@ TEST_F(BrunetonModel, IrradianceAtRandomPointsMatchesMonteCarlo) {
     const std::vector<Query> queries = randomIrradianceQueries(p, 200, 34, p.atmosphereHeight);
     std::vector<glm::dvec3> table;
     for (const glm::vec4& g : probe(*tables, queries, "irradiance")) table.emplace_back(g);
-    const Percentiles e = irradianceErrors(reference, queries, table, 3, 500, 1e-3);
-    std::printf("Bruneton's irradiance against Monte Carlo at 200 points: median %.4f, 90th percentile %.4f, largest %.4f\n", e.median,
-                e.ninetieth, e.largest);
-    EXPECT_LT(e.median, kMedian);
-    EXPECT_LT(e.ninetieth, kNinetieth);
-    EXPECT_LT(e.largest, kLargest);
+    expectPercentilesBelow(irradianceErrors(reference, queries, table, 3, 500, 1e-3), "Bruneton's irradiance against Monte Carlo at 200 points",
+                           kMedian, kNinetieth, kLargest);
 }
 
 // The sky's irradiance from tables of orders 1 and 2: E then holds order 1's light alone, which
@@ -246,18 +238,9 @@ TEST_F(BrunetonModel, HighOrderScatteringMatchesMonteCarlo) {
     const auto single = bruneton(LutResolution::Medium, 1, 0.0);
     const AtmosphereParameters& p = all->parameters().physics;
     const ReferenceAtmosphere reference(p);
-    struct Case { double altitude, viewElevation, sunElevation, azimuth; };
-    const Case cases[] = {{2.0, 30.0, 30.0, 90.0}, {2.0, 60.0, 10.0, 180.0}, {2.0, 5.0, 45.0, 40.0},
-                          {5000.0, 20.0, 60.0, 120.0}, {30000.0, 10.0, 20.0, 60.0}, {2.0, 80.0, 2.0, 0.0}};
-    std::vector<Query> queries;
-    std::vector<ReferenceAtmosphere::Estimate> estimates;
-    for (const Case& c : cases) {
-        const double v = c.viewElevation * kPi / 180.0, s = c.sunElevation * kPi / 180.0, a = c.azimuth * kPi / 180.0;
-        const glm::dvec3 position(0.0, p.earthRadius + c.altitude, 0.0), viewDir(std::cos(v), std::sin(v), 0.0);
-        const glm::dvec3 sunDir(std::cos(s) * std::cos(a), std::sin(s), std::cos(s) * std::sin(a));
-        queries.push_back({glm::vec4(glm::vec3(position), 0.0f), glm::vec4(glm::vec3(viewDir), 0.0f), glm::vec4(glm::vec3(sunDir), 0.0f)});
-        estimates.push_back(reference.highOrderScattering(position, viewDir, sunDir, 4, 20000, 11u + static_cast<unsigned>(estimates.size())));
-    }
+    const HighOrderCases cases = highOrderCases(reference, p);
+    const std::vector<Query>& queries = cases.queries;
+    const std::vector<ReferenceAtmosphere::Estimate>& estimates = cases.estimates;
     const auto withAll = probe(*all, queries, "inscatter");
     const auto withSingle = probe(*single, queries, "inscatter");
     for (size_t i = 0; i < queries.size(); ++i) {
@@ -295,20 +278,12 @@ TEST_F(BrunetonModel, InscatterAtRandomPointsMatchesTheReference) {
         total.emplace_back(withAll[i]);
     }
     const auto estimates = monteCarloHighOrders(reference, queries, 4, 400);
-    const HighOrderErrors e = highOrderErrors(reference, high, estimates, kRadianceFloor, set, kShortRay);
-    std::printf("Bruneton's orders 2-4 against Monte Carlo at 200 points: median %.4f, 90th percentile %.4f, largest (rays over 5 km) %.4f\n",
-                e.median, e.ninetieth, e.largestLongRay);
-    EXPECT_LT(e.median, kMedian);
-    EXPECT_LT(e.ninetieth, kNinetieth);
-    EXPECT_LT(e.largestLongRay, kLargest);
+    expectHighOrderErrorsBelow(highOrderErrors(reference, high, estimates, kRadianceFloor, set, kShortRay),
+                               "Bruneton's orders 2-4 against Monte Carlo at 200 points", kMedian, kNinetieth, kLargest);
     // The whole in-scatter table, orders 1 to 4, against the reference's single scattering plus
     // the same estimates.
-    const HighOrderErrors t = highOrderErrors(reference, total, withSingleScattering(reference, queries, estimates), kRadianceFloor, set, kShortRay);
-    std::printf("Bruneton's in-scatter table at 200 points: median %.4f, 90th percentile %.4f, largest (rays over 5 km) %.4f\n", t.median,
-                t.ninetieth, t.largestLongRay);
-    EXPECT_LT(t.median, kTotalMedian);
-    EXPECT_LT(t.ninetieth, kTotalNinetieth);
-    EXPECT_LT(t.largestLongRay, kTotalLargest);
+    expectHighOrderErrorsBelow(highOrderErrors(reference, total, withSingleScattering(reference, queries, estimates), kRadianceFloor, set, kShortRay),
+                               "Bruneton's in-scatter table at 200 points", kTotalMedian, kTotalNinetieth, kTotalLargest);
 }
 
 // The ground's bounce: tables of orders 1 and 2 with albedo 0.3 minus the same with albedo 0
@@ -371,9 +346,7 @@ TEST_F(BrunetonModel, NoNanOrInfAnywhere) {
     const double R = tables->parameters().physics.earthRadius;
     const std::vector<Query> queries = extremeQueries(R);
     for (const char* entry : {"inscatter", "transmittance", "irradiance"}) {
-        const auto got = probe(*tables, queries, entry);
-        for (size_t i = 0; i < got.size(); ++i)
-            for (int ch = 0; ch < 3; ++ch) ASSERT_TRUE(std::isfinite(got[i][ch]) && got[i][ch] >= 0.0f) << entry << " query " << i;
+        expectFiniteAndNotNegative(probe(*tables, queries, entry), entry);
     }
 }
 
