@@ -37,6 +37,7 @@ add_library(firmament_portable STATIC
     ${src}/reference/ReferenceAtmosphere.cpp
     ${src}/atmosphere/SunAnimation.cpp
     ${src}/atmosphere/bruneton/BrunetonParameterization.cpp
+    ${src}/atmosphere/hillaire/HillaireParameterization.cpp
     ${src}/atmosphere/yusov/YusovParameterization.cpp
     ${src}/clouds/CloudField.cpp
     ${src}/clouds/CloudGrid.cpp
@@ -96,6 +97,7 @@ add_executable(firmament_portable_tests
     ${tests}/unit/FileIOTest.cpp
     ${tests}/unit/FlightPathTest.cpp
     ${tests}/unit/FlyCameraTest.cpp
+    ${tests}/unit/HillaireParameterizationTest.cpp
     ${tests}/unit/HidReportsTest.cpp
     ${tests}/unit/ParticleDensityTest.cpp
     ${tests}/unit/ParticleScatteringTest.cpp
