@@ -45,6 +45,7 @@ add_library(firmament_portable STATIC
     ${src}/reference/CloudMedium.cpp
     ${src}/reference/CloudPathTracer.cpp
     ${src}/reference/DeckDiffusion.cpp
+    ${src}/reference/HillaireMultipleScatteringTwin.cpp
     ${src}/clouds/LightSpace.cpp
     ${src}/clouds/OpticalDepthTable.cpp
     ${src}/clouds/ParticleBlending.cpp
@@ -97,6 +98,7 @@ add_executable(firmament_portable_tests
     ${tests}/unit/FileIOTest.cpp
     ${tests}/unit/FlightPathTest.cpp
     ${tests}/unit/FlyCameraTest.cpp
+    ${tests}/unit/HillaireMultipleScatteringTest.cpp
     ${tests}/unit/HillaireParameterizationTest.cpp
     ${tests}/unit/HidReportsTest.cpp
     ${tests}/unit/ParticleDensityTest.cpp
