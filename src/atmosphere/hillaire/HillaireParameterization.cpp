@@ -8,7 +8,9 @@ namespace firmament::atmosphere::hillaire {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-double horizonDistanceSquared(const AtmosphereParameters& p, double r) { return std::max(r * r - p.earthRadius * p.earthRadius, 0.0); }
+// rho^2 = r^2 - Rg^2, as (r - Rg)(r + Rg): the GPU's single precision keeps the altitude's digits
+// that way, where r^2 - Rg^2 would cancel them.
+double horizonDistanceSquared(const AtmosphereParameters& p, double r) { return std::max((r - p.earthRadius) * (r + p.earthRadius), 0.0); }
 }  // namespace
 
 Dimensions Dimensions::of(LutResolution resolution) {
