@@ -46,6 +46,13 @@ struct BrunetonPassConstants {
 FIRMAMENT_CONSTANT_BUFFER(BrunetonPassConstants);
 
 // atmosphere/yusov/precompute_*.hlsl: the part of a table one dispatch fills.
+// atmosphere/hillaire/precompute_*.hlsl: Hillaire 2020's tables' sizes and sampling.
+struct HillaireConstants {
+    float4 transmittanceSize;       // xy: texels along mu and r; zw: unused
+    float4 multipleScatteringSize;  // xy: texels along mu_s and r; z: directions over the sphere; w: steps along each
+};
+FIRMAMENT_CONSTANT_BUFFER(HillaireConstants);
+
 struct PrecomputeSliceConstants {
     uint4 range;  // x: first z slice; y: one past the last; zw: unused
 };

@@ -33,6 +33,15 @@ float3 particleDensity(AtmosphereConstants a, float h) {
     return float3(exponential, ozone);
 }
 
+// The altitude at distance t along the ray from radius r along the zenith cosine mu, by the law
+// of cosines from rho^2 = r^2 - Rg^2 so that the metres near the ground survive single precision:
+// h = (rho^2 + t^2 + 2 r mu t) / (r_t + Rg).
+float altitudeAlongRay(AtmosphereConstants a, float r, float rho2, float mu, float t) {
+    float above = rho2 + t * (t + 2.0 * r * mu);  // r_t^2 - Rg^2
+    float rg = a.earth.x;
+    return max(above / (sqrt(max(rg * rg + above, 0.0)) + rg), 0.0);
+}
+
 // Optical depth of a path whose net densities (density integrated over length) are given.
 float3 opticalDepth(AtmosphereConstants a, float3 netDensity) {
     return a.rayleighScattering.rgb * netDensity.x + a.mieExtinction.rgb * netDensity.y + a.ozone.rgb * netDensity.z;

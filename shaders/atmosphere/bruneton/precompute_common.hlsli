@@ -15,13 +15,8 @@ cbuffer SliceBuffer : register(b2) {
 };
 SamplerState linearClamp : register(s0);
 
-// The altitude at distance t along the ray (r, mu), by the law of cosines, from rho^2 = r^2 - Rg^2 so that metres near the ground survive:
-// h = (rho^2 + t^2 + 2 r mu t) / (r_t + Rg).
-float altitudeAt(float r, float rho2, float mu, float t) {
-    float above = rho2 + t * (t + 2.0 * r * mu);  // r_t^2 - Rg^2
-    float rg = atmosphere.earth.x;
-    return max(above / (sqrt(max(rg * rg + above, 0.0)) + rg), 0.0);
-}
+// The altitude at distance t along the ray (r, mu): physics.hlsli's altitudeAlongRay.
+float altitudeAt(float r, float rho2, float mu, float t) { return altitudeAlongRay(atmosphere, r, rho2, mu, t); }
 
 // Length of the ray (r, mu) to the ground (`toGround`: the texel's half says) or to the top.
 float rayLength(float r, float rho2, float mu, bool toGround) {

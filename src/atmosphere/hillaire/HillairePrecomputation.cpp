@@ -1,0 +1,80 @@
+#include "atmosphere/hillaire/HillairePrecomputation.h"
+
+#include "gpu/CommonStates.h"
+
+#include <cstdio>
+
+namespace firmament {
+
+namespace {
+const ShaderKey kTransmittance{"atmosphere/hillaire/precompute_transmittance.hlsl", "main", "cs_5_0", {}};
+const ShaderKey kMultipleScattering{"atmosphere/hillaire/precompute_multiple_scattering.hlsl", "main", "cs_5_0", {}};
+
+constexpr unsigned kGroup = 8;  // both shaders: 8 x 8 x 1
+constexpr UINT kReadWrite = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_ACCESS;
+
+void runUnit(ID3D11DeviceContext* context, ShaderLibrary& shaders, const WorkUnit<HillaireStage>& unit, const HillaireParameters& parameters,
+             const HillaireTables& tables, HillaireScratch& scratch) {
+    scratch.atmosphere.update(context, parameters.physics.constants());
+    scratch.hillaire.update(context, parameters.constants());
+    ID3D11Buffer* buffers[] = {scratch.atmosphere.get(), scratch.hillaire.get()};
+    context->CSSetConstantBuffers(0, 2, buffers);
+    context->CSSetSamplers(0, 1, scratch.linearClamp.GetAddressOf());
+    const auto& n = parameters.lut;
+    switch (unit.stage) {
+        case HillaireStage::Transmittance:
+            bindCompute(context, shaders.computeShader(kTransmittance), {}, {tables.transmittance.uav.Get()});
+            context->Dispatch(groupCount(static_cast<unsigned>(n.transmittanceMu), kGroup), groupCount(static_cast<unsigned>(n.transmittanceR), kGroup), 1);
+            unbindCompute(context, 0, 1);
+            break;
+        case HillaireStage::MultipleScattering:
+            bindCompute(context, shaders.computeShader(kMultipleScattering), {tables.transmittance.srv.Get()}, {tables.multipleScattering.uav.Get()});
+            context->Dispatch(groupCount(static_cast<unsigned>(n.multipleScatteringMuS), kGroup),
+                              groupCount(static_cast<unsigned>(n.multipleScatteringR), kGroup), 1);
+            unbindCompute(context, 1, 1);
+            break;
+    }
+}
+}  // namespace
+
+gpu::HillaireConstants HillaireParameters::constants() const {
+    gpu::HillaireConstants c{};
+    c.transmittanceSize = glm::vec4(static_cast<float>(lut.transmittanceMu), static_cast<float>(lut.transmittanceR), 0.0f, 0.0f);
+    c.multipleScatteringSize = glm::vec4(static_cast<float>(lut.multipleScatteringMuS), static_cast<float>(lut.multipleScatteringR),
+                                         static_cast<float>(multipleScatteringDirections), static_cast<float>(multipleScatteringSteps));
+    return c;
+}
+
+std::string HillaireParameters::describe() const {
+    char text[160];
+    std::snprintf(text, sizeof(text), " model=Hillaire2020 transmittance=%dx%d multipleScattering=%dx%d directions=%d steps=%d", lut.transmittanceMu,
+                  lut.transmittanceR, lut.multipleScatteringMuS, lut.multipleScatteringR, multipleScatteringDirections, multipleScatteringSteps);
+    return physics.describe() + text;
+}
+
+std::string stageName(HillaireStage stage, int) {
+    return stage == HillaireStage::Transmittance ? "transmittance" : "multiple scattering";
+}
+
+std::string describeTables(const HillaireParameters& parameters) {
+    const auto& n = parameters.lut;
+    char what[160];
+    std::snprintf(what, sizeof(what), "transmittance %dx%d, multiple scattering %dx%d (%d directions of %d steps)", n.transmittanceMu,
+                  n.transmittanceR, n.multipleScatteringMuS, n.multipleScatteringR, parameters.multipleScatteringDirections,
+                  parameters.multipleScatteringSteps);
+    return what;
+}
+
+HillaireScratch::HillaireScratch(ID3D11Device* device, const HillaireParameters&, const HillaireTables&)
+    : atmosphere(device), hillaire(device), linearClamp(states::linearClamp(device)) {}
+
+HillairePrecomputation::HillairePrecomputation(ID3D11Device* device, const HillaireParameters& parameters)
+    : StagedComputation("atmosphere (Hillaire 2020): ", device, parameters, runUnit) {
+    const auto& n = parameters_.lut;
+    tables_.transmittance = createColorTexture(device, n.transmittanceMu, n.transmittanceR, DXGI_FORMAT_R32G32B32A32_FLOAT, kReadWrite);
+    tables_.multipleScattering = createColorTexture(device, n.multipleScatteringMuS, n.multipleScatteringR, DXGI_FORMAT_R32G32B32A32_FLOAT, kReadWrite);
+    addUnit(HillaireStage::Transmittance);
+    addUnit(HillaireStage::MultipleScattering);
+}
+
+}  // namespace firmament

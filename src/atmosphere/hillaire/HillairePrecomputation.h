@@ -1,0 +1,55 @@
+#pragma once
+// Fills Hillaire 2020's tables that do not depend on the camera, on the GPU:
+//   1. transmittance T(r, mu) to the top of the atmosphere, 2D;
+//   2. multiple scattering Psi_ms(r, mu_s), 2D, which reads the first.
+// Shaders: shaders/atmosphere/hillaire/precompute_*.hlsl. The sky-view and aerial-perspective
+// tables follow the camera and are made each frame by the render passes (not yet written). Like
+// the other models' pre-computations, the work is cut into units (StagedComputation); these two
+// tables are small enough for one unit each.
+#include "atmosphere/AtmosphereParameters.h"
+#include "atmosphere/AtmosphereStructures.h"
+#include "atmosphere/hillaire/HillaireParameterization.h"
+#include "gpu/ConstantBuffer.h"
+#include "gpu/Texture.h"
+#include "tables/StagedComputation.h"
+
+#include <wrl/client.h>
+
+#include <string>
+
+namespace firmament {
+
+// The model's parameters: the physics the three models share and its own tables' sizes and
+// sampling (the paper's: 64 directions of 20 steps for the multiple scattering).
+struct HillaireParameters {
+    AtmosphereParameters physics;
+    atmosphere::hillaire::Dimensions lut;
+    int multipleScatteringDirections = 64;
+    int multipleScatteringSteps = 20;
+
+    gpu::HillaireConstants constants() const;
+    std::string describe() const;  // everything that changes the tables, as text
+};
+
+struct HillaireTables {
+    Texture2D transmittance;       // R32G32B32A32_FLOAT: (mu, r) -> T to the top
+    Texture2D multipleScattering;  // R32G32B32A32_FLOAT: (mu_s, r) -> Psi_ms per unit sun irradiance
+};
+
+enum class HillaireStage { Transmittance, MultipleScattering };
+std::string stageName(HillaireStage stage, int order);
+std::string describeTables(const HillaireParameters& parameters);
+
+struct HillaireScratch {
+    HillaireScratch(ID3D11Device* device, const HillaireParameters& parameters, const HillaireTables& tables);
+    ConstantBuffer<gpu::AtmosphereConstants> atmosphere;
+    ConstantBuffer<gpu::HillaireConstants> hillaire;
+    Microsoft::WRL::ComPtr<ID3D11SamplerState> linearClamp;
+};
+
+class HillairePrecomputation final : public StagedComputation<HillaireStage, HillaireParameters, HillaireTables, HillaireScratch> {
+public:
+    HillairePrecomputation(ID3D11Device* device, const HillaireParameters& parameters);
+};
+
+}  // namespace firmament
