@@ -10,7 +10,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kIsotropicPhase = 1.0 / (4.0 * kPi);
 
-// Direction i of `count` spread evenly over the sphere: the spherical Fibonacci set, equal areas.
+// Direction i of `count` spread evenly over the sphere: the spherical Fibonacci set, equal areas,
+// the set the device's tables use (src/tables/SphereDirections), written again here in double
+// precision so that the twin shares no code with the pass it checks (and stays portable).
 glm::dvec3 fibonacciDirection(int i, int count) {
     const double goldenAngle = kPi * (3.0 - std::sqrt(5.0));
     const double y = 1.0 - (2.0 * i + 1.0) / count;

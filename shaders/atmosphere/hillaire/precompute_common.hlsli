@@ -1,7 +1,8 @@
 #ifndef FIRMAMENT_HILLAIRE_PRECOMPUTE_COMMON_HLSLI
 #define FIRMAMENT_HILLAIRE_PRECOMPUTE_COMMON_HLSLI
 // What Hillaire 2020's pre-computation passes share: the constants (b0: the atmosphere, b1: the
-// model's sizes), the sampler, and the scattering coefficient.
+// model's sizes; src/atmosphere/AtmosphereComputeInputs binds them), the sampler, and the
+// scattering coefficient.
 #include "atmosphere/hillaire/parameterization.hlsli"
 #include "atmosphere/physics.hlsli"
 

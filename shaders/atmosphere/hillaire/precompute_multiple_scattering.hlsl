@@ -1,6 +1,6 @@
 // Hillaire 2020's multiple-scattering table Psi_ms(r, mu_s) (Hillaire 2020, section 5.5): at the
 // texel's point with the sun at zenith cosine mu_s, over directions spread evenly on the sphere
-// (a spherical Fibonacci set), each ray marched in equal steps to the ground or the top, with an
+// (the tables' spherical Fibonacci set, src/tables/SphereDirections), each ray marched in equal steps to the ground or the top, with an
 // isotropic phase p_u from the first event of the second order on and the ground black:
 //   L_2  = sum of p_u dw  integral of sigma_s T(x, y) T_sun(y) p_u dt  (first-order light at x),
 //   f_ms = sum of p_u dw  integral of sigma_s T(x, y) dt                (an isotropic field's share sent back),
@@ -10,18 +10,11 @@
 #include "atmosphere/hillaire/precompute_common.hlsli"
 
 Texture2D<float4> transmittanceTable : register(t0);
+StructuredBuffer<float4> sphereDirections : register(t1);  // multipleScatteringSize.z of them
 RWTexture2D<float4> multipleScattering : register(u0);
 
 static const float kIsotropicPhase = 1.0 / (4.0 * kPi);
 static const int kSubsteps = 4;
-
-// Direction i of `count` over the sphere: the spherical Fibonacci set (equal areas).
-float3 fibonacciDirection(int i, int count) {
-    float goldenAngle = kPi * (3.0 - sqrt(5.0));
-    float y = 1.0 - (2.0 * i + 1.0) / count;
-    float ring = sqrt(max(0.0, 1.0 - y * y));
-    return float3(ring * cos(goldenAngle * i), y, ring * sin(goldenAngle * i));
-}
 
 // The sun's transmittance at p (radius |p|), from the table; zero behind the Earth.
 float3 sunTransmittanceAt(float3 p, float3 sunDir) {
@@ -43,7 +36,7 @@ void main(uint3 id : SV_DispatchThreadID) {
     float rho2 = hillaireHorizonDistanceSquared(atmosphere, r);
     float3 secondOrder = 0.0, transfer = 0.0;
     for (int i = 0; i < directions; ++i) {
-        float3 w = fibonacciDirection(i, directions);
+        float3 w = sphereDirections[i].xyz;
         // To the ground below the horizon (none from the ground itself), else to the top.
         bool toGround = w.y < -sqrt(rho2) / r;
         float rayLength = toGround ? max(raySphere(x, w, atmosphere.earth.x).x, 0.0) : max(raySphere(x, w, atmosphere.earth.z).y, 0.0);

@@ -1,7 +1,5 @@
 #include "atmosphere/hillaire/HillairePrecomputation.h"
 
-#include "gpu/CommonStates.h"
-
 #include <cstdio>
 
 namespace firmament {
@@ -15,11 +13,8 @@ constexpr UINT kReadWrite = D3D11_BIND_SHADER_RESOURCE | D3D11_BIND_UNORDERED_AC
 
 void runUnit(ID3D11DeviceContext* context, ShaderLibrary& shaders, const WorkUnit<HillaireStage>& unit, const HillaireParameters& parameters,
              const HillaireTables& tables, HillaireScratch& scratch) {
-    scratch.atmosphere.update(context, parameters.physics.constants());
     scratch.hillaire.update(context, parameters.constants());
-    ID3D11Buffer* buffers[] = {scratch.atmosphere.get(), scratch.hillaire.get()};
-    context->CSSetConstantBuffers(0, 2, buffers);
-    context->CSSetSamplers(0, 1, scratch.linearClamp.GetAddressOf());
+    scratch.inputs.bind(context, parameters.physics.constants(), scratch.hillaire.get(), unit.first, unit.end);
     const auto& n = parameters.lut;
     switch (unit.stage) {
         case HillaireStage::Transmittance:
@@ -28,10 +23,11 @@ void runUnit(ID3D11DeviceContext* context, ShaderLibrary& shaders, const WorkUni
             unbindCompute(context, 0, 1);
             break;
         case HillaireStage::MultipleScattering:
-            bindCompute(context, shaders.computeShader(kMultipleScattering), {tables.transmittance.srv.Get()}, {tables.multipleScattering.uav.Get()});
+            bindCompute(context, shaders.computeShader(kMultipleScattering), {tables.transmittance.srv.Get(), scratch.inputs.sphereDirections()},
+                        {tables.multipleScattering.uav.Get()});
             context->Dispatch(groupCount(static_cast<unsigned>(n.multipleScatteringMuS), kGroup),
                               groupCount(static_cast<unsigned>(n.multipleScatteringR), kGroup), 1);
-            unbindCompute(context, 1, 1);
+            unbindCompute(context, 2, 1);
             break;
     }
 }
@@ -65,8 +61,8 @@ std::string describeTables(const HillaireParameters& parameters) {
     return what;
 }
 
-HillaireScratch::HillaireScratch(ID3D11Device* device, const HillaireParameters&, const HillaireTables&)
-    : atmosphere(device), hillaire(device), linearClamp(states::linearClamp(device)) {}
+HillaireScratch::HillaireScratch(ID3D11Device* device, const HillaireParameters& parameters, const HillaireTables&)
+    : inputs(device, parameters.multipleScatteringDirections), hillaire(device) {}
 
 HillairePrecomputation::HillairePrecomputation(ID3D11Device* device, const HillaireParameters& parameters)
     : StagedComputation("atmosphere (Hillaire 2020): ", device, parameters, runUnit) {

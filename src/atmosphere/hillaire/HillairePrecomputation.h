@@ -6,14 +6,13 @@
 // tables follow the camera and are made each frame by the render passes (not yet written). Like
 // the other models' pre-computations, the work is cut into units (StagedComputation); these two
 // tables are small enough for one unit each.
+#include "atmosphere/AtmosphereComputeInputs.h"
 #include "atmosphere/AtmosphereParameters.h"
 #include "atmosphere/AtmosphereStructures.h"
 #include "atmosphere/hillaire/HillaireParameterization.h"
 #include "gpu/ConstantBuffer.h"
 #include "gpu/Texture.h"
 #include "tables/StagedComputation.h"
-
-#include <wrl/client.h>
 
 #include <string>
 
@@ -40,11 +39,12 @@ enum class HillaireStage { Transmittance, MultipleScattering };
 std::string stageName(HillaireStage stage, int order);
 std::string describeTables(const HillaireParameters& parameters);
 
+// What only computing needs: the inputs every model's pre-computation reads (the constants, the
+// sampler, and the multiple scattering's directions over the sphere) and the model's constants.
 struct HillaireScratch {
     HillaireScratch(ID3D11Device* device, const HillaireParameters& parameters, const HillaireTables& tables);
-    ConstantBuffer<gpu::AtmosphereConstants> atmosphere;
+    AtmosphereComputeInputs inputs;
     ConstantBuffer<gpu::HillaireConstants> hillaire;
-    Microsoft::WRL::ComPtr<ID3D11SamplerState> linearClamp;
 };
 
 class HillairePrecomputation final : public StagedComputation<HillaireStage, HillaireParameters, HillaireTables, HillaireScratch> {
