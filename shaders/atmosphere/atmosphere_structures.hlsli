@@ -39,8 +39,6 @@ FIRMAMENT_CONSTANT_BUFFER(BrunetonConstants);
 
 // atmosphere/bruneton/render.hlsl
 struct BrunetonPassConstants {
-    uint4 view;  // x: 0 the whole frame, 1 only columns >= y (the split view's right side), 2 the
-                 // difference |this - the frame already drawn|; y: the split's first column; zw: unused
     float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
 };
 FIRMAMENT_CONSTANT_BUFFER(BrunetonPassConstants);
@@ -50,8 +48,19 @@ FIRMAMENT_CONSTANT_BUFFER(BrunetonPassConstants);
 struct HillaireConstants {
     float4 transmittanceSize;       // xy: texels along mu and r; zw: unused
     float4 multipleScatteringSize;  // xy: texels along mu_s and r; z: directions over the sphere; w: steps along each
+    float4 skyView;                 // xy: texels along the longitude and the latitude; z: steps along each view; w: unused
+    float4 aerialPerspective;       // x: froxels along each axis; y: the volume's depth (m); z: steps per slice;
+                                    // w: steps of a view marched per pixel (beyond the volume, from space)
+    float4 irradianceSize;          // xy: the sky irradiance table, texels along mu_s and r; z: directions over the
+                                    // sphere; w: steps along each
 };
 FIRMAMENT_CONSTANT_BUFFER(HillaireConstants);
+
+// atmosphere/hillaire/render.hlsl
+struct HillairePassConstants {
+    float4 sun;  // x: cosine of the sun's angular radius; y: the disc's radiance per unit irradiance; zw: unused
+};
+FIRMAMENT_CONSTANT_BUFFER(HillairePassConstants);
 
 struct PrecomputeSliceConstants {
     uint4 range;  // x: first z slice; y: one past the last; zw: unused

@@ -7,14 +7,18 @@
 //   GROUND_LIGHTING=0  no atmosphere: the sun unattenuated above the horizon, and a constant sky
 //                      irradiance of kConstantSkyIrradiance (the orientation grid's stand-in);
 //   GROUND_LIGHTING=1  Yusov 2013: the net density table and the ambient sky light table;
-//   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table.
-// (A comparison of the two models draws the ground once per model, each clipped to its side of
-// the frame: src/frame/GroundLighting.h.)
-// Callers declare cbuffers `atmosphere` (AtmosphereConstants) and, for 2, `bruneton`, the
-// tables `sunTransmittanceTable` and `skyIrradianceTable`, and the sampler `linearClamp`.
+//   GROUND_LIGHTING=2  Bruneton 2008: the transmittance table and the irradiance table;
+//   GROUND_LIGHTING=3  Hillaire 2020: the transmittance table and Firmament's sky irradiance table.
+// (A comparison of models draws the ground once per model, each clipped to its columns of the
+// frame: src/frame/GroundLighting.h.)
+// Callers declare cbuffers `atmosphere` (AtmosphereConstants), for 2 `bruneton` and for 3
+// `hillaire`, the tables `sunTransmittanceTable` and `skyIrradianceTable`, and the sampler
+// `linearClamp`.
 #include "atmosphere/yusov/lookup.hlsli"
 #if GROUND_LIGHTING == 2
 #include "atmosphere/bruneton/lookup.hlsli"
+#elif GROUND_LIGHTING == 3
+#include "atmosphere/hillaire/lookup.hlsli"
 #endif
 
 static const float kConstantSkyIrradiance = 0.1;
@@ -42,6 +46,14 @@ GroundLight brunetonGroundLight(float altitude, float cosSunZenith, Texture2D<fl
     g.skyIrradiance = irradianceAt(atmosphere, bruneton, irradiance, linearClamp, r, cosSunZenith);
     return g;
 }
+#elif GROUND_LIGHTING == 3
+GroundLight hillaireGroundLight(float altitude, float cosSunZenith, Texture2D<float4> transmittance, Texture2D<float4> irradiance) {
+    GroundLight g;
+    float r = atmosphere.earth.x + max(altitude, 0.0);
+    g.sunTransmittance = hillaireTransmittanceToTop(atmosphere, hillaire, transmittance, linearClamp, r, cosSunZenith);
+    g.skyIrradiance = hillaireIrradianceAt(atmosphere, hillaire, irradiance, linearClamp, r, cosSunZenith);
+    return g;
+}
 #endif
 
 GroundLight groundLight(float altitude, float cosSunZenith) {
@@ -49,6 +61,8 @@ GroundLight groundLight(float altitude, float cosSunZenith) {
     return yusovGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
 #elif GROUND_LIGHTING == 2
     return brunetonGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
+#elif GROUND_LIGHTING == 3
+    return hillaireGroundLight(altitude, cosSunZenith, sunTransmittanceTable, skyIrradianceTable);
 #else
     GroundLight g;
     g.sunTransmittance = cosSunZenith > 0.0 ? 1.0 : 0.0;

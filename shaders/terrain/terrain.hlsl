@@ -19,7 +19,11 @@
 
 cbuffer FrameBuffer : register(b0) { FrameConstants frame; };
 cbuffer AtmosphereBuffer : register(b1) { AtmosphereConstants atmosphere; };
+#if GROUND_LIGHTING == 3
+cbuffer HillaireBuffer : register(b2) { HillaireConstants hillaire; };
+#else
 cbuffer BrunetonBuffer : register(b2) { BrunetonConstants bruneton; };
+#endif
 cbuffer TerrainBuffer : register(b3) { TerrainConstants terrain; };
 cbuffer ShadowBuffer : register(b4) { ShadowConstants shadows; };
 cbuffer ShadowCasterBuffer : register(b5) { ShadowCasterConstants caster; };

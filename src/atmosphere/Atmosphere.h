@@ -1,18 +1,22 @@
 #pragma once
 // The atmosphere technique: the look-up tables for the current physical parameters, and the
-// sky, the sun and the aerial perspective drawn with them, by Yusov 2013's model or Bruneton
-// and Neyret 2008's, or both to compare them (side by side, or their difference).
+// sky, the sun and the aerial perspective drawn with them, by Yusov 2013's model, Bruneton and
+// Neyret 2008's or Hillaire 2020's, or several to compare them (ModelRegions.h: two side by
+// side, their difference, or all three in thirds).
 //  - Update step: when a setting that shapes the tables changes, new tables are made (from the
 //    cache, or computed one unit of work per frame while the old ones stay in use; at once when
 //    the frame says so). Until the first tables exist, ready() is false and the program shows
 //    the orientation grid's own sky.
 //  - Render steps: the sky where nothing was drawn, and the aerial perspective over geometry,
 //    two passes so that the light shafts can replace the second.
-//  - Hand-offs: the tables that light the ground (GroundLighting, per region of the frame) and
-//    Yusov's tables for a technique that looks them up itself (ScatteringLookup).
+//  - Hand-offs: the tables that light the ground (GroundLighting, per region of the frame), and
+//    Yusov's and Bruneton's tables for a technique that looks them up itself (ScatteringLookup,
+//    BrunetonLookup).
 // The model comparison stays inside: the ground sees only the regions it is given.
 #include "atmosphere/AtmosphereSettings.h"
+#include "atmosphere/ModelRegions.h"
 #include "atmosphere/bruneton/BrunetonPass.h"
+#include "atmosphere/hillaire/HillairePass.h"
 #include "atmosphere/yusov/YusovPass.h"
 #include "core/ExrImage.h"
 #include "frame/BrunetonLookup.h"
@@ -32,19 +36,21 @@ public:
     Atmosphere(ID3D11Device* device, TableStorage storage);
 
     // Frame order step 1: the tables for these settings. Their work is timed as
-    // "Atmosphere tables (Yusov)" and "Atmosphere tables (Bruneton)".
+    // "Atmosphere tables (Yusov)", "(Bruneton)" and "(Hillaire)".
     void update(FrameContext& frame, const AtmosphereSettings& settings);
     // The tables the settings' model (or both, to compare) need exist.
     bool ready(const AtmosphereSettings& settings) const;
 
     // Where nothing was drawn: the sky, the sun's disc and, for Bruneton's model, its ground.
+    // Hillaire's model first makes its sky-view table and aerial-perspective volume for the frame
+    // (timed as "Sky-view and aerial perspective (Hillaire)").
     void renderSky(FrameContext& frame, const AtmosphereSettings& settings);
     // Over geometry: its radiance through the atmosphere and the light scattered in between.
     void renderAerialPerspective(FrameContext& frame, const AtmosphereSettings& settings);
 
     // The tables that light the ground, one entry per region of the frame: none of the models'
-    // (GroundLightingModel::None) when the atmosphere is off or not ready; in the split view
-    // Yusov's left of the middle column and Bruneton's from it on; in the difference view Yusov's.
+    // (GroundLightingModel::None) when the atmosphere is off or not ready; in a split or three-way
+    // view each model's over its columns; in the difference view the first model's.
     std::vector<GroundLighting> groundLighting(FrameContext& frame, const AtmosphereSettings& settings);
     // Yusov's tables for another technique; not ready() when that model's tables do not exist.
     ScatteringLookup scatteringLookup(FrameContext& frame, const AtmosphereSettings& settings);
@@ -63,18 +69,26 @@ public:
 
 private:
     void render(FrameContext& frame, const AtmosphereSettings& settings, AtmospherePart part);
+    void drawModel(FrameContext& frame, const AtmosphereSettings& settings, AtmospherePart part, const ModelRegion& region,
+                   ID3D11ShaderResourceView* scene);
+    GroundLighting groundLightingOf(FrameContext& frame, const ModelRegion& region);
 
     ID3D11Device* device_;
     TableStorage storage_;
     CachedTables<YusovPrecomputation> yusov_;
     CachedTables<BrunetonPrecomputation> bruneton_;
+    CachedTables<HillairePrecomputation> hillaire_;
     YusovPass yusovPass_;
     BrunetonPass brunetonPass_;
+    HillairePass hillairePass_;
     ConstantBuffer<gpu::AtmosphereConstants> yusovConstants_;  // the hand-offs' copies of the models' constants
     ConstantBuffer<gpu::AtmosphereConstants> brunetonPhysics_;
     ConstantBuffer<gpu::BrunetonConstants> brunetonConstants_;
+    ConstantBuffer<gpu::AtmosphereConstants> hillairePhysics_;
+    ConstantBuffer<gpu::HillaireConstants> hillaireConstants_;
     ComPtr<ID3D11SamplerState> linearClamp_;
-    Texture2D yusovFrame_;  // the difference view: the frame as Yusov's model drew it
+    FullscreenPass difference_;
+    Texture2D firstModel_, secondModel_;  // the difference view: the frame as each model drew it
 };
 
 }  // namespace firmament

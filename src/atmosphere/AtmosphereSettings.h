@@ -13,14 +13,16 @@
 namespace firmament {
 
 enum class LutResolution { Small, Medium, Full };
-// Which model draws the atmosphere: Yusov's update of Intel's sample, or
-// Bruneton and Neyret's 2008 model, from the same physical parameters.
-enum class AtmosphereModel { Yusov2013, Bruneton2008 };
-inline constexpr std::array<std::string_view, 2> kAtmosphereModelNames{"Yusov 2013", "Bruneton 2008"};
-// Both models at once: Yusov's on the left half and Bruneton's on the right (Split), or the
-// absolute difference of their radiance (Difference), which tone mapping then shows.
-enum class ModelComparison { None, Split, Difference };
-inline constexpr std::array<std::string_view, 3> kModelComparisonNames{"None", "Split", "Difference"};
+// Which model draws the atmosphere, from the same physical parameters: Yusov's update of Intel's
+// sample, Bruneton and Neyret's 2008 model, or Hillaire's 2020 model.
+enum class AtmosphereModel { Yusov2013, Bruneton2008, Hillaire2020 };
+inline constexpr std::array<std::string_view, 3> kAtmosphereModelNames{"Yusov 2013", "Bruneton 2008", "Hillaire 2020"};
+// Models side by side: the model on the left half and the compared model on the right (Split);
+// the absolute difference of their radiance (Difference), which tone mapping then shows; or all
+// three in thirds, Yusov's, Bruneton's and Hillaire's from the left (Three-way). ModelRegions.h
+// gives each its columns.
+enum class ModelComparison { None, Split, Difference, ThreeWay };
+inline constexpr std::array<std::string_view, 4> kModelComparisonNames{"None", "Split", "Difference", "Three-way"};
 inline constexpr std::array<std::string_view, 3> kLutResolutionNames{"Small (8x32x16x8)", "Medium (16x64x32x8)",
                                                                      "Full (32x128x64x16)"};
 
@@ -28,6 +30,7 @@ struct AtmosphereSettings {
     bool enabled = true;             // "Enable light scattering": the sky and aerial perspective
     AtmosphereModel model = AtmosphereModel::Yusov2013;
     ModelComparison comparison = ModelComparison::None;
+    AtmosphereModel comparedModel = AtmosphereModel::Bruneton2008;  // the split's right side, the difference's other term
     float groundAlbedo = 0.1f;       // Bruneton's model: the ground's average reflectance (its bounce and its colour)
     SingleScatteringMode singleScattering = SingleScatteringMode::Table;
     MultipleScatteringMode multipleScattering = MultipleScatteringMode::Unoccluded;
@@ -45,11 +48,21 @@ struct AtmosphereSettings {
     bool ozone = false;              // an absorbing ozone layer (Bruneton 2017), beyond Yusov 2013
     bool animateSun = false;         // the sun turns about the x axis (SunAnimation.h)
     LutResolution resolution = LutResolution::Full;
+    // Hillaire 2020's own controls, the paper's defaults: the tables made each frame (the sky
+    // view's texels and steps, the froxels along each axis of the aerial perspective and the
+    // steps per slice), and the multiple-scattering table's directions and steps.
+    int hillaireSkyViewWidth = 192, hillaireSkyViewHeight = 108;
+    int hillaireSkyViewSteps = 30;     // also the steps of a view marched per pixel (from space, beyond the froxels)
+    int hillaireFroxels = 32;
+    int hillaireFroxelSteps = 2;       // per slice
+    int hillaireMultipleScatteringDirections = 64;
+    int hillaireMultipleScatteringSteps = 20;
 
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable light scattering");
         v.choice("model", model, kAtmosphereModelNames, "Atmosphere model");
         v.choice("comparison", comparison, kModelComparisonNames, "Compare models");
+        v.choice("comparedModel", comparedModel, kAtmosphereModelNames, "Compared with");
         v.field("groundAlbedo", groundAlbedo, {0.0f, 1.0f}, "Ground albedo (Bruneton)");
         v.choice("singleScattering", singleScattering, kSingleScatteringModeNames, "Single scattering mode");
         v.choice("multipleScattering", multipleScattering, kMultipleScatteringModeNames, "Multiple scattering mode");
@@ -65,6 +78,14 @@ struct AtmosphereSettings {
         v.field("ozone", ozone, "Ozone layer");
         v.field("animateSun", animateSun, "Animate sun");
         v.choice("lutResolution", resolution, kLutResolutionNames, "LUT resolution");
+        v.field("hillaireSkyViewWidth", hillaireSkyViewWidth, {16, 512}, "Sky-view texels, longitude (Hillaire)");
+        v.field("hillaireSkyViewHeight", hillaireSkyViewHeight, {16, 512}, "Sky-view texels, latitude (Hillaire)");
+        v.field("hillaireSkyViewSteps", hillaireSkyViewSteps, {4, 128}, "Sky-view steps (Hillaire)");
+        v.field("hillaireFroxels", hillaireFroxels, {8, 128}, "Aerial perspective froxels per axis (Hillaire)");
+        v.field("hillaireFroxelSteps", hillaireFroxelSteps, {1, 16}, "Aerial perspective steps per slice (Hillaire)");
+        v.field("hillaireMultipleScatteringDirections", hillaireMultipleScatteringDirections, {16, 1024},
+                "Multiple scattering directions (Hillaire)");
+        v.field("hillaireMultipleScatteringSteps", hillaireMultipleScatteringSteps, {4, 100}, "Multiple scattering steps (Hillaire)");
     }
 };
 

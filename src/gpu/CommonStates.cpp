@@ -123,6 +123,10 @@ ComPtr<ID3D11RasterizerState> cullBackScissored(ID3D11Device* device) {
     return rasterizer(device, D3D11_CULL_BACK, true, 0.0f, true, "CreateRasterizerState (cull back, scissored)");
 }
 
+ComPtr<ID3D11RasterizerState> cullNoneScissored(ID3D11Device* device) {
+    return rasterizer(device, D3D11_CULL_NONE, true, 0.0f, true, "CreateRasterizerState (cull none, scissored)");
+}
+
 ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScaledBias) {
     return rasterizer(device, D3D11_CULL_NONE, false, slopeScaledBias, false, "CreateRasterizerState (shadow casters)");
 }

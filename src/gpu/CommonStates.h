@@ -19,8 +19,9 @@ ComPtr<ID3D11SamplerState> shadowComparison(ID3D11Device* device);
 // Rasterizer states, all solid and depth-clipped unless said otherwise.
 ComPtr<ID3D11RasterizerState> cullNone(ID3D11Device* device);
 ComPtr<ID3D11RasterizerState> cullBack(ID3D11Device* device);  // clockwise triangles are the front
-// Back-face culling inside the scissor rectangle (a pass drawn over part of the frame).
+// Back-face culling, or none, inside the scissor rectangle (a pass drawn over part of the frame).
 ComPtr<ID3D11RasterizerState> cullBackScissored(ID3D11Device* device);
+ComPtr<ID3D11RasterizerState> cullNoneScissored(ID3D11Device* device);
 // Shadow casters: no culling, a slope-scaled depth bias, and no depth clipping, so that casters
 // nearer the light than the cascade's range clamp to its near plane and still cast.
 ComPtr<ID3D11RasterizerState> shadowCaster(ID3D11Device* device, float slopeScaledBias);

@@ -2,16 +2,24 @@
 
 #include "gpu/CommonStates.h"
 
+#include <algorithm>
+
 namespace firmament {
 
-FullscreenPass::FullscreenPass(ID3D11Device* device) : rasterizer_(states::cullNone(device)), noDepth_(states::depthNone(device)) {}
+FullscreenPass::FullscreenPass(ID3D11Device* device)
+    : rasterizer_(states::cullNone(device)), scissored_(states::cullNoneScissored(device)), noDepth_(states::depthNone(device)) {}
 
-void FullscreenPass::bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height) const {
+void FullscreenPass::bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height, Columns columns) const {
     const D3D11_VIEWPORT viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
     context->OMSetRenderTargets(1, &target, nullptr);
     context->OMSetDepthStencilState(noDepth_.Get(), 0);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffff);
-    context->RSSetState(rasterizer_.Get());
+    const bool part = columns.first > 0 || columns.end < width;
+    context->RSSetState(part ? scissored_.Get() : rasterizer_.Get());
+    if (part) {
+        const D3D11_RECT rect{std::clamp(columns.first, 0, width), 0, std::clamp(columns.end, 0, width), height};
+        context->RSSetScissorRects(1, &rect);
+    }
     context->RSSetViewports(1, &viewport);
     context->IASetInputLayout(nullptr);
     context->IASetPrimitiveTopology(D3D11_PRIMITIVE_TOPOLOGY_TRIANGLELIST);

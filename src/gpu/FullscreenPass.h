@@ -12,12 +12,19 @@
 
 namespace firmament {
 
+// The columns [first, end) of a target a pass draws (clipped to the target): a comparison of
+// atmosphere models draws each in its own.
+struct Columns {
+    int first = 0;
+    int end = 1 << 30;
+};
+
 class FullscreenPass {
 public:
     explicit FullscreenPass(ID3D11Device* device);
 
-    // Sets the target, the viewport and the fixed-function states.
-    void bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height) const;
+    // Sets the target, the viewport and the fixed-function states; the pass draws `columns` only.
+    void bindTarget(ID3D11DeviceContext* context, ID3D11RenderTargetView* target, int width, int height, Columns columns = {}) const;
     // Sets the two shaders and draws the triangle.
     void draw(ID3D11DeviceContext* context, ShaderLibrary& shaders, const ShaderKey& vertexShader,
               const ShaderKey& pixelShader) const;
@@ -28,7 +35,7 @@ public:
               ID3D11SamplerState* sampler) const;
 
 private:
-    ComPtr<ID3D11RasterizerState> rasterizer_;
+    ComPtr<ID3D11RasterizerState> rasterizer_, scissored_;
     ComPtr<ID3D11DepthStencilState> noDepth_;
 };
 

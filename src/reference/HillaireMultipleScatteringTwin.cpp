@@ -54,8 +54,8 @@ MultipleScatteringTransfer hillaireMultipleScattering(const ReferenceAtmosphere&
 }
 
 glm::dvec3 hillaireMultipleScatteringRadiance(const ReferenceAtmosphere& reference, glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
-                                              int viewSteps, int directions, int steps) {
-    const double length = reference.rayLength(start, viewDir);
+                                              int viewSteps, int directions, int steps, double maxLength) {
+    const double length = std::min(reference.rayLength(start, viewDir), maxLength);
     const double dt = length / viewSteps;
     glm::dvec3 radiance(0.0);
     for (int s = 0; s < viewSteps; ++s) {

@@ -32,8 +32,9 @@ MultipleScatteringTransfer hillaireMultipleScattering(const ReferenceAtmosphere&
                                                      int steps = 20);
 
 // The orders from the second on, seen from `start` along `viewDir` with the sun along `sunDir`, by
-// the approximation: `viewSteps` equal steps along the view, Psi_ms computed at each.
+// the approximation: `viewSteps` equal steps along the view (to its end, or `maxLength` metres
+// when nearer), Psi_ms computed at each.
 glm::dvec3 hillaireMultipleScatteringRadiance(const ReferenceAtmosphere& reference, glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
-                                              int viewSteps = 16, int directions = 64, int steps = 20);
+                                              int viewSteps = 16, int directions = 64, int steps = 20, double maxLength = 1e300);
 
 }  // namespace firmament::atmosphere

@@ -118,7 +118,7 @@ void Terrain::render(FrameContext& frame, const GroundLighting& lighting, const 
     context->OMSetRenderTargets(1, &hdrFrame, frame.targets.depth().dsv.Get());
     context->OMSetDepthStencilState(depthTest_.Get(), 0);
     context->OMSetBlendState(nullptr, nullptr, 0xffffffff);
-    ID3D11Buffer* buffers[7] = {frame.frameConstants, lighting.atmosphere, lighting.bruneton, constants_.get(), shadows.constants, nullptr,
+    ID3D11Buffer* buffers[7] = {frame.frameConstants, lighting.atmosphere, lighting.modelConstants, constants_.get(), shadows.constants, nullptr,
                                 clouds.constants};
     context->VSSetConstantBuffers(0, 5, buffers);
     context->PSSetConstantBuffers(0, 7, buffers);

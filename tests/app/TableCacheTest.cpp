@@ -119,16 +119,18 @@ TEST(TableCache, TerrainHeightFieldIsGeneratedOnceAndRegeneratedWhenDamaged) {
     std::filesystem::remove_all(folder);
 }
 
-// Both models at once (the split view): each caches and exports its own tables, and a later
-// run loads both.
-TEST(TableCache, BothModelsCacheAndExportTheirTables) {
-    const auto folder = std::filesystem::temp_directory_path() / "firmament-table-cache-both";
+// The three models at once (the three-way view): each caches and exports its own tables, and a
+// later run loads all three.
+TEST(TableCache, EveryModelCachesAndExportsItsTables) {
+    const auto folder = std::filesystem::temp_directory_path() / "firmament-table-cache-three";
     std::filesystem::remove_all(folder);
     const auto cache = folder / "cache", exported = folder / "exported";
-    ProcessResult run = runWithCache(cache, {L"--set", L"atmosphere.comparison=split", L"--export-luts", exported.wstring()});
+    ProcessResult run = runWithCache(cache, {L"--set", L"atmosphere.comparison=Three-way", L"--export-luts", exported.wstring()});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
-    EXPECT_EQ(filesIn(cache).size(), 10u);  // Yusov's five, Bruneton's three, the terrain's height field, the clouds' optical depth
-    for (const char* name : {"bruneton-transmittance.exr", "bruneton-irradiance.exr", "bruneton-inscatter.exr", "multiple-scattering.exr"})
+    // Yusov's five, Bruneton's three, Hillaire's three, the terrain's height field, the clouds' optical depth.
+    EXPECT_EQ(filesIn(cache).size(), 13u);
+    for (const char* name : {"bruneton-transmittance.exr", "bruneton-irradiance.exr", "bruneton-inscatter.exr", "multiple-scattering.exr",
+                             "hillaire-transmittance.exr", "hillaire-multiple-scattering.exr", "hillaire-irradiance.exr"})
         EXPECT_TRUE(std::filesystem::exists(exported / name)) << name;
     const ExrFile inscatter = readExr(exported / "bruneton-inscatter.exr");
     EXPECT_EQ(inscatter.image.width, 8 * 4);    // mu_s x nu
@@ -140,14 +142,30 @@ TEST(TableCache, BothModelsCacheAndExportTheirTables) {
     const FloatExrFile transmittance = readFloatExr(exported / "bruneton-transmittance.exr");
     EXPECT_EQ(transmittance.image.width, 64);
     EXPECT_GT(transmittance.image.rgba[(transmittance.image.width - 1) * 4], 0.5f);  // looking up from the ground: mostly clear
+    // Hillaire's at Small: transmittance 64 x 16 (the zenith in the first column), the multiple
+    // scattering 16 x 16, the sky irradiance 64 x 16, each describing itself.
+    const FloatExrFile hillaire = readFloatExr(exported / "hillaire-transmittance.exr");
+    EXPECT_EQ(hillaire.image.width, 64);
+    EXPECT_EQ(hillaire.image.height, 16);
+    EXPECT_GT(hillaire.image.rgba[0], 0.5f);  // straight up from the ground
+    EXPECT_EQ(std::get<std::string>(hillaire.attributes.at("firmament.lut.model")), "Hillaire 2020");
+    EXPECT_EQ(readFloatExr(exported / "hillaire-multiple-scattering.exr").image.width, 16);
+    const FloatExrFile irradiance = readFloatExr(exported / "hillaire-irradiance.exr");
+    EXPECT_EQ(irradiance.image.width, 64);
+    for (const char* name : {"firmament.lut.name", "firmament.lut.layout", "firmament.lut.parameterization", "firmament.lut.key",
+                             "firmament.lut.sampling", "firmament.atmosphere.mieScattering"})
+        EXPECT_TRUE(irradiance.attributes.count(name)) << name;
 
-    run = runWithCache(cache, {L"--set", L"atmosphere.comparison=split"});
+    run = runWithCache(cache, {L"--set", L"atmosphere.comparison=Three-way"});
     ASSERT_EQ(run.exitCode, 0u) << run.output;
-    EXPECT_NE(run.output.find("atmosphere (Bruneton 2008): tables"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("pre-computing"), std::string::npos) << run.output;
-    const auto first = run.output.find("loaded from the cache");
-    ASSERT_NE(first, std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("loaded from the cache", first + 1), std::string::npos) << run.output;
+    // Each model's log line: "<name>: tables <key> loaded from the cache in <folder>".
+    for (const char* model : {"atmosphere: tables", "atmosphere (Bruneton 2008): tables", "atmosphere (Hillaire 2020): tables"}) {
+        const size_t at = run.output.find(model);
+        ASSERT_NE(at, std::string::npos) << model << "\n" << run.output;
+        const std::string line = run.output.substr(at, run.output.find('\n', at) - at);
+        EXPECT_NE(line.find("loaded from the cache"), std::string::npos) << line;
+    }
     std::filesystem::remove_all(folder);
 }
 

@@ -28,7 +28,7 @@ protected:
 
     // A frame context whose work finishes at once; nothing is drawn with it here.
     FrameContext frame() {
-        return {device(), context(), *productShaderLibrary, *profiler, targets, frameConstants->get(), constants, camera, sun, 0.0, 1.0 / 60.0, true};
+        return frameContext(constants, camera, sun);
     }
 
     // Small tables, single scattering only: the hand-offs, not the tables, are under test.
@@ -99,22 +99,27 @@ TEST_F(AtmosphereHandOff, GroundLightingGivesOneRegionPerModelDrawn) {
     struct Case {
         AtmosphereModel model;
         ModelComparison comparison;
+        AtmosphereModel compared;
         std::vector<GroundLightingModel> models;
         std::vector<glm::ivec2> columns;  // [first, end), the end clipped to the frame's width
     };
+    using M = AtmosphereModel;
+    using G = GroundLightingModel;
     const Case cases[] = {
-        {AtmosphereModel::Yusov2013, ModelComparison::None, {GroundLightingModel::Yusov2013}, {{0, kWidth}}},
-        {AtmosphereModel::Bruneton2008, ModelComparison::None, {GroundLightingModel::Bruneton2008}, {{0, kWidth}}},
-        {AtmosphereModel::Yusov2013, ModelComparison::Split, {GroundLightingModel::Yusov2013, GroundLightingModel::Bruneton2008},
-         {{0, kWidth / 2}, {kWidth / 2, kWidth}}},
-        {AtmosphereModel::Bruneton2008, ModelComparison::Split, {GroundLightingModel::Yusov2013, GroundLightingModel::Bruneton2008},
-         {{0, kWidth / 2}, {kWidth / 2, kWidth}}},
-        {AtmosphereModel::Yusov2013, ModelComparison::Difference, {GroundLightingModel::Yusov2013}, {{0, kWidth}}},
+        {M::Yusov2013, ModelComparison::None, M::Bruneton2008, {G::Yusov2013}, {{0, kWidth}}},
+        {M::Bruneton2008, ModelComparison::None, M::Bruneton2008, {G::Bruneton2008}, {{0, kWidth}}},
+        {M::Hillaire2020, ModelComparison::None, M::Bruneton2008, {G::Hillaire2020}, {{0, kWidth}}},
+        {M::Yusov2013, ModelComparison::Split, M::Bruneton2008, {G::Yusov2013, G::Bruneton2008}, {{0, kWidth / 2}, {kWidth / 2, kWidth}}},
+        {M::Hillaire2020, ModelComparison::Split, M::Yusov2013, {G::Hillaire2020, G::Yusov2013}, {{0, kWidth / 2}, {kWidth / 2, kWidth}}},
+        {M::Yusov2013, ModelComparison::Difference, M::Hillaire2020, {G::Yusov2013}, {{0, kWidth}}},
+        {M::Bruneton2008, ModelComparison::ThreeWay, M::Bruneton2008, {G::Yusov2013, G::Bruneton2008, G::Hillaire2020},
+         {{0, kWidth / 3}, {kWidth / 3, 2 * kWidth / 3}, {2 * kWidth / 3, kWidth}}},
     };
     for (const Case& c : cases) {
         AtmosphereSettings s = smallTables();
         s.model = c.model;
         s.comparison = c.comparison;
+        s.comparedModel = c.compared;
         atmosphere.update(f, s);
         const std::vector<GroundLighting> regions = atmosphere.groundLighting(f, s);
         ASSERT_EQ(regions.size(), c.models.size()) << static_cast<int>(c.model) << " " << static_cast<int>(c.comparison);
@@ -125,7 +130,7 @@ TEST_F(AtmosphereHandOff, GroundLightingGivesOneRegionPerModelDrawn) {
             EXPECT_NE(g.atmosphere, nullptr);
             EXPECT_NE(g.sunTransmittance, nullptr);
             EXPECT_NE(g.skyIrradiance, nullptr);
-            EXPECT_EQ(g.bruneton != nullptr, g.model == GroundLightingModel::Bruneton2008);
+            EXPECT_EQ(g.modelConstants != nullptr, g.model != GroundLightingModel::Yusov2013);
         }
     }
     // Scattering off: the ground's own stand-in, over the whole frame.

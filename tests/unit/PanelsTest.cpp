@@ -46,8 +46,8 @@ public:
 TEST(Panels, EveryPanelDrawsInEveryStateWithExistingKeys) {
     HeadlessImGui gui;
     for (const Panel panel : {Panel::Basic, Panel::Additional, Panel::ToneMapping, Panel::Clouds, Panel::Performance})
-        for (const AtmosphereModel model : {AtmosphereModel::Yusov2013, AtmosphereModel::Bruneton2008})
-            for (const ModelComparison comparison : {ModelComparison::None, ModelComparison::Split, ModelComparison::Difference})
+        for (const AtmosphereModel model : {AtmosphereModel::Yusov2013, AtmosphereModel::Bruneton2008, AtmosphereModel::Hillaire2020})
+            for (const ModelComparison comparison : {ModelComparison::None, ModelComparison::Split, ModelComparison::Difference, ModelComparison::ThreeWay})
                 for (const bool custom : {false, true})
                     for (const LightShaftTechnique technique : {LightShaftTechnique::Epipolar, LightShaftTechnique::BruteForce}) {
                     State state;

@@ -9,9 +9,7 @@
 //    other geometry keeps the radiance the scene gave it, seen through the same T;
 //  - the sun's disc where the ray leaves the atmosphere, through T(x, v).
 // Two passes, as Yusov's model's: ps_sky where nothing was drawn (the sky, the sun and the
-// model's own ground), ps_aerial_perspective over geometry. BrunetonPassConstants.view draws
-// the whole frame, only its right part (the split view), or |this model - the frame already
-// drawn| (the difference view).
+// model's own ground), ps_aerial_perspective over geometry.
 #include "atmosphere/bruneton/lookup.hlsli"
 #include "atmosphere/render_passes.hlsli"
 
@@ -19,17 +17,12 @@ cbuffer BrunetonBuffer : register(b2) {
     BrunetonConstants bruneton;
 };
 cbuffer PassBuffer : register(b3) {
-    BrunetonPassConstants composition;
+    BrunetonPassConstants sunDisc;
 };
 
 Texture2D<float4> transmittanceTable : register(t2);
 Texture2D<float4> irradianceTable : register(t3);
 Texture3D<float4> inscatterTable : register(t4);
-Texture2D<float4> otherModel : register(t5);     // the difference view: the frame the other model drew
-
-static const uint kWholeFrame = 0;
-static const uint kSplitRight = 1;
-static const uint kDifference = 2;
 
 // In-scattered radiance per unit sun irradiance from the table's RGBA.
 float3 inscatteredRadiance(float4 rayleighMie, float nu) {
@@ -58,8 +51,8 @@ float3 modelRadiance(int2 pixel, float2 uv, float depth) {
     if (r > rt) {
         float2 top = raySphere(x, v, rt);
         if (top.y <= 0.0 || top.x <= 0.0) {  // misses the atmosphere: space, the sun, geometry as it is
-            bool sunHere = depth <= 0.0 && dot(v, s) > composition.sun.x && raySphere(x, v, rg).y <= 0.0;
-            return depth > 0.0 ? scene : (sunHere ? sunIrradiance * composition.sun.y : 0.0);
+            bool sunHere = depth <= 0.0 && dot(v, s) > sunDisc.sun.x && raySphere(x, v, rg).y <= 0.0;
+            return depth > 0.0 ? scene : (sunHere ? sunIrradiance * sunDisc.sun.y : 0.0);
         }
         offset = top.x;
         x += v * offset;
@@ -113,30 +106,22 @@ float3 modelRadiance(int2 pixel, float2 uv, float depth) {
         } else {
             radiance = transmittance * scene;
         }
-    } else if (nu > composition.sun.x) {
-        radiance = sunTransmittanceAt(atmosphere, bruneton, transmittanceTable, linearClamp, r, mu) * sunIrradiance * composition.sun.y;
+    } else if (nu > sunDisc.sun.x) {
+        radiance = sunTransmittanceAt(atmosphere, bruneton, transmittanceTable, linearClamp, r, mu) * sunIrradiance * sunDisc.sun.y;
     }
     return radiance + inscatteredRadiance(inscatter, nu) * sunIrradiance;
 }
 
-float4 composed(int2 pixel, float2 uv, float depth) {
-    float3 radiance = modelRadiance(pixel, uv, depth);
-    if (composition.view.x == kDifference) radiance = abs(radiance - otherModel.Load(int3(pixel, 0)).rgb);
-    return float4(radiance, 1.0);
-}
-
 float4 ps_sky(FullscreenVertex input) : SV_Target {
     int2 pixel = int2(input.position.xy);
-    if (composition.view.x == kSplitRight && (uint)pixel.x < composition.view.y) discard;
     float depth = sceneDepth.Load(int3(pixel, 0));
     if (depth > 0.0) discard;  // reversed Z: geometry, the other pass's
-    return composed(pixel, input.uv, depth);
+    return float4(modelRadiance(pixel, input.uv, depth), 1.0);
 }
 
 float4 ps_aerial_perspective(FullscreenVertex input) : SV_Target {
     int2 pixel = int2(input.position.xy);
-    if (composition.view.x == kSplitRight && (uint)pixel.x < composition.view.y) discard;
     float depth = sceneDepth.Load(int3(pixel, 0));
     if (depth <= 0.0) discard;  // nothing drawn: the sky pass's
-    return composed(pixel, input.uv, depth);
+    return float4(modelRadiance(pixel, input.uv, depth), 1.0);
 }

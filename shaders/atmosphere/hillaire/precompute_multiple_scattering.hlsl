@@ -7,6 +7,7 @@
 //   Psi_ms = L_2 / (1 - f_ms).
 // T(x, y) by the trapezoidal rule on four sub-steps a step; T_sun(y) from the transmittance
 // table, zero where the Earth hides the sun. The CPU twin: src/reference/HillaireMultipleScatteringTwin.
+#include "atmosphere/hillaire/lookup.hlsli"
 #include "atmosphere/hillaire/precompute_common.hlsli"
 
 Texture2D<float4> transmittanceTable : register(t0);
@@ -18,11 +19,8 @@ static const int kSubsteps = 4;
 
 // The sun's transmittance at p (radius |p|), from the table; zero behind the Earth.
 float3 sunTransmittanceAt(float3 p, float3 sunDir) {
-    float r = length(p), muS = dot(p, sunDir) / r;
-    if (muS < -sqrt(hillaireHorizonDistanceSquared(atmosphere, r)) / r) return 0.0;  // below the horizon
-    float2 unit = hillaireTransmittanceUnit(atmosphere, r, muS);
-    float2 size = hillaire.transmittanceSize.xy;
-    return transmittanceTable.SampleLevel(linearClamp, 0.5 / size + unit * (1.0 - 1.0 / size), 0).rgb;
+    float r = length(p);
+    return hillaireTransmittanceToTop(atmosphere, hillaire, transmittanceTable, linearClamp, r, dot(p, sunDir) / r);
 }
 
 [numthreads(8, 8, 1)]

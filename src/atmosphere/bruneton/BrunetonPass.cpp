@@ -3,8 +3,6 @@
 #include "atmosphere/SunDisc.h"
 #include "gpu/CommonStates.h"
 
-#include <cmath>
-
 namespace firmament {
 
 namespace {
@@ -16,20 +14,19 @@ BrunetonPass::BrunetonPass(ID3D11Device* device)
 
 void BrunetonPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, AtmospherePart part, const BrunetonPrecomputation& tables,
                           ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance, ID3D11ShaderResourceView* depth,
-                          const Texture2D& target, const BrunetonComposition& composition) {
+                          const Texture2D& target, Columns columns) {
     atmosphere_.update(context, tables.parameters().physics.constants());
     bruneton_.update(context, tables.parameters().constants());
     gpu::BrunetonPassConstants constants{};
-    constants.view = glm::uvec4(static_cast<unsigned>(composition.view), composition.firstColumn, 0u, 0u);
     // The same sun disc as Yusov's model draws, so that the two compare.
-    constants.sun = glm::vec4(static_cast<float>(std::cos(kSunAngularRadius)), static_cast<float>(sunDiscRadiance()), 0.0f, 0.0f);
+    constants.sun = sunDiscConstants();
     constants_.update(context, constants);
 
-    fullscreen_.bindTarget(context, target.rtv.Get(), target.width, target.height);
+    fullscreen_.bindTarget(context, target.rtv.Get(), target.width, target.height, columns);
     const BrunetonTables& t = tables.tables();
     fullscreen_.draw(context, shaders, atmosphereVertexShader(kShaderFile), atmospherePixelShader(kShaderFile, part),
                      {frameConstants, atmosphere_.get(), bruneton_.get(), constants_.get()},
-                     {sceneRadiance, depth, t.transmittance.srv.Get(), t.irradiance.srv.Get(), t.inscatter.srv.Get(), composition.otherModel},
+                     {sceneRadiance, depth, t.transmittance.srv.Get(), t.irradiance.srv.Get(), t.inscatter.srv.Get()},
                      linearClamp_.Get());
 }
 

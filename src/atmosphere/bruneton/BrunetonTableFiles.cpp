@@ -28,12 +28,6 @@ ExrAttributes commonAttributes(const BrunetonParameters& p, const std::string& k
     return a;
 }
 
-FloatRgbaImage floatImage(const ReadbackImage& texels) {
-    FloatRgbaImage image{texels.width, texels.height, std::vector<float>(texels.bytes.size() / 4)};
-    std::memcpy(image.rgba.data(), texels.bytes.data(), texels.bytes.size());
-    return image;
-}
-
 }  // namespace
 
 void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const BrunetonPrecomputation& tables,
@@ -48,13 +42,13 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Brune
     a["firmament.lut.name"] = std::string("transmittance T(r, mu) to the top of the atmosphere");
     a["firmament.lut.dimensions"] = std::to_string(n.transmittanceMu) + " x " + std::to_string(n.transmittanceR) + " (mu, r)";
     a["firmament.lut.layout"] = std::string("x: u_mu, y: u_r (the ground in the top row). Rays that meet the ground hold the grazing ray's value.");
-    writeExr(folder / (prefix + kTransmittanceFile), floatImage(readTexture2D(device, context, tables.tables().transmittance.texture.Get())), a);
+    writeExr(folder / (prefix + kTransmittanceFile), floatRgbaImage(readTexture2D(device, context, tables.tables().transmittance.texture.Get())), a);
 
     a = commonAttributes(p, key);
     a["firmament.lut.name"] = std::string("sky irradiance E(r, mu_s) on a horizontal surface, orders 1 to N - 1, per unit sun irradiance");
     a["firmament.lut.dimensions"] = std::to_string(n.irradianceMuS) + " x " + std::to_string(n.irradianceR) + " (mu_s, r)";
     a["firmament.lut.layout"] = std::string("x: u_mu_s, y: u_r (the ground in the top row)");
-    writeExr(folder / (prefix + kIrradianceFile), floatImage(readTexture2D(device, context, tables.tables().irradiance.texture.Get())), a);
+    writeExr(folder / (prefix + kIrradianceFile), floatRgbaImage(readTexture2D(device, context, tables.tables().irradiance.texture.Get())), a);
 
     const ReadbackVolume volume = readTexture3D(device, context, tables.tables().inscatter.texture.Get());
     HalfRgbaImage inscatter{volume.width, volume.height * volume.depth, std::vector<std::uint16_t>(volume.bytes.size() / 2)};

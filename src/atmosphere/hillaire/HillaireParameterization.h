@@ -28,12 +28,14 @@
 namespace firmament::atmosphere::hillaire {
 
 // Sizes of the tables. Full is the paper's: transmittance 256 x 64, multiple scattering
-// 32 x 32, sky view 192 x 108, aerial perspective 32 x 32 x 32.
+// 32 x 32, sky view 192 x 108, aerial perspective 32 x 32 x 32; and the sky irradiance that
+// Firmament adds, 64 x 16 (Bruneton's irradiance table's size).
 struct Dimensions {
     int transmittanceMu = 256, transmittanceR = 64;
     int multipleScatteringMuS = 32, multipleScatteringR = 32;
     int skyViewLongitude = 192, skyViewLatitude = 108;
     int aerialPerspective = 32;  // froxels along each axis
+    int irradianceMuS = 64, irradianceR = 16;  // Firmament's sky irradiance for the ground (the multiple scattering's mapping)
 
     static Dimensions of(LutResolution resolution);
 };

@@ -3,8 +3,6 @@
 #include "atmosphere/SunDisc.h"
 #include "gpu/CommonStates.h"
 
-#include <cmath>
-
 namespace firmament {
 
 namespace {
@@ -18,16 +16,16 @@ gpu::YusovPassConstants YusovPass::constants(const AtmosphereSettings& settings)
     gpu::YusovPassConstants c{};
     c.mode = glm::uvec4(static_cast<unsigned>(settings.singleScattering), static_cast<unsigned>(settings.integrationSteps),
                         static_cast<unsigned>(settings.multipleScattering), 0u);
-    c.sun = glm::vec4(static_cast<float>(std::cos(kSunAngularRadius)), static_cast<float>(sunDiscRadiance()), 0.0f, 0.0f);
+    c.sun = sunDiscConstants();
     return c;
 }
 
 void YusovPass::render(ID3D11DeviceContext* context, ShaderLibrary& shaders, AtmospherePart part, const AtmosphereSettings& settings,
                        const YusovPrecomputation& tables, ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance,
-                       ID3D11ShaderResourceView* depth, const Texture2D& target) {
+                       ID3D11ShaderResourceView* depth, const Texture2D& target, Columns columns) {
     atmosphere_.update(context, tables.parameters().constants());
     constants_.update(context, constants(settings));
-    fullscreen_.bindTarget(context, target.rtv.Get(), target.width, target.height);
+    fullscreen_.bindTarget(context, target.rtv.Get(), target.width, target.height, columns);
     const YusovTables& t = tables.tables();
     fullscreen_.draw(context, shaders, atmosphereVertexShader(kShaderFile), atmospherePixelShader(kShaderFile, part),
                      {frameConstants, atmosphere_.get(), constants_.get()},

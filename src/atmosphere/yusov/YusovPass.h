@@ -23,7 +23,7 @@ public:
     // `sceneRadiance`: a copy of the frame before this pass (the aerial perspective reads it).
     void render(ID3D11DeviceContext* context, ShaderLibrary& shaders, AtmospherePart part, const AtmosphereSettings& settings,
                 const YusovPrecomputation& tables, ID3D11Buffer* frameConstants, ID3D11ShaderResourceView* sceneRadiance,
-                ID3D11ShaderResourceView* depth, const Texture2D& target);
+                ID3D11ShaderResourceView* depth, const Texture2D& target, Columns columns = {});
 
     // The pass's constants for these settings: the scattering modes and the sun's disc.
     static gpu::YusovPassConstants constants(const AtmosphereSettings& settings);

@@ -1,7 +1,9 @@
 // The atmosphere: light scattering on and off, the sun (Basic panel); the model, the comparison
-// of models, each model's own controls while it draws, and the physical constants (Additional
-// panel); the tables' progress while they are computed.
+// of models (and the compared model), each model's own controls while it draws, and the physical
+// constants (Additional panel); the tables' progress while they are computed.
 #include "ui/panels/TechniquePanels.h"
+
+#include "atmosphere/ModelRegions.h"
 
 #include <imgui.h>
 
@@ -21,11 +23,15 @@ void basic(PanelContext& panel) {
 void additional(PanelContext& panel) {
     ImGui::SeparatorText("Atmosphere");
     const AtmosphereSettings& atmosphere = panel.model.state.atmosphere;
-    const bool comparing = atmosphere.comparison != ModelComparison::None;
     editSettings(panel, "atmosphere", {"model", "comparison"});
-    if (atmosphere.model == AtmosphereModel::Yusov2013 || comparing)
+    if (atmosphere.comparison == ModelComparison::Split || atmosphere.comparison == ModelComparison::Difference)
+        editSettings(panel, "atmosphere", {"comparedModel"});
+    if (drawsModel(atmosphere, AtmosphereModel::Yusov2013))
         editSettings(panel, "atmosphere", {"singleScattering", "multipleScattering", "integrationSteps"});
-    if (atmosphere.model == AtmosphereModel::Bruneton2008 || comparing) editSettings(panel, "atmosphere", {"groundAlbedo"});
+    if (drawsModel(atmosphere, AtmosphereModel::Bruneton2008)) editSettings(panel, "atmosphere", {"groundAlbedo"});
+    if (drawsModel(atmosphere, AtmosphereModel::Hillaire2020))
+        editSettings(panel, "atmosphere", {"hillaireSkyViewWidth", "hillaireSkyViewHeight", "hillaireSkyViewSteps", "hillaireFroxels",
+                                           "hillaireFroxelSteps", "hillaireMultipleScatteringDirections", "hillaireMultipleScatteringSteps"});
     editSettings(panel, "atmosphere", {"scatteringOrders", "aerosolDensity", "aerosolAbsorption", "mieAsymmetry", "customCoefficients", "ozone",
                                        "lutResolution", "animateSun"});
     if (atmosphere.customCoefficients) editSettings(panel, "atmosphere", {"rayleighColour", "mieColour"});
