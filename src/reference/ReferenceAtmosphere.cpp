@@ -194,10 +194,15 @@ ReferenceAtmosphere::Estimate estimate(glm::dvec3 sum, glm::dvec3 sumOfSquares, 
 
 ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
                                                                      int maxOrder, int paths, unsigned seed) const {
+    return scatteringOrders(start, viewDir, sunDir, 2, maxOrder, paths, seed);
+}
+
+ReferenceAtmosphere::Estimate ReferenceAtmosphere::scatteringOrders(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int minOrder,
+                                                                  int maxOrder, int paths, unsigned seed) const {
     std::mt19937_64 random(seed);
     glm::dvec3 sum(0.0), sumOfSquares(0.0);
     for (int path = 0; path < paths; ++path) {
-        const glm::dvec3 contribution = tracePath(start, viewDir, sunDir, 2, maxOrder, random);
+        const glm::dvec3 contribution = tracePath(start, viewDir, sunDir, minOrder, maxOrder, random);
         sum += contribution;
         sumOfSquares += contribution * contribution;
     }

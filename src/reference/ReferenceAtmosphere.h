@@ -57,6 +57,9 @@ public:
     };
     Estimate highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int maxOrder, int paths,
                                  unsigned seed) const;
+    // The same paths' light of orders minOrder..maxOrder only (1: single scattering too).
+    Estimate scatteringOrders(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int minOrder, int maxOrder, int paths,
+                              unsigned seed) const;
     // The sky's irradiance on a horizontal surface at `position`, orders 1..maxOrder (the
     // ground black), by the same paths started in directions drawn by their cosine with the up
     // vector: Yusov 2013's ambient light (eq. 3) and Bruneton's E.

@@ -2,7 +2,7 @@
 //   surface: q.a = (x, z, vertex spacing, mip) -> (surfaceHeight, heightFieldAt, detailHeight, earthDrop)
 //   shading: q.a = (albedo rgb, altitude), q.b = (normal xyz, sun visibility), q.c = (up xyz, 0),
 //            q.d = (direction to the sun xyz, 0) -> (lambertianRadiance(...) per unit sun irradiance, 0)
-// GROUND_LIGHTING (0, 1, 2) picks the tables as in the terrain's pixel shader. Threads past the
+// GROUND_LIGHTING (0 to 3) picks the tables as in the terrain's pixel shader. Threads past the
 // last query read zeros and write nowhere (out-of-range structured buffer accesses).
 #ifndef GROUND_LIGHTING
 #define GROUND_LIGHTING 0
@@ -11,7 +11,11 @@
 #include "terrain/terrain_structures.hlsli"
 
 cbuffer AtmosphereBuffer : register(b0) { AtmosphereConstants atmosphere; };
+#if GROUND_LIGHTING == 3
+cbuffer HillaireBuffer : register(b1) { HillaireConstants hillaire; };
+#else
 cbuffer BrunetonBuffer : register(b1) { BrunetonConstants bruneton; };
+#endif
 cbuffer TerrainBuffer : register(b2) { TerrainConstants terrain; };
 
 struct Query {
