@@ -34,10 +34,15 @@ double relativeError(double got, double expected, double floor) {
 
 class AtmosphereTables : public WarpDevice {
 protected:
+    static std::filesystem::path suiteTables() { return std::filesystem::temp_directory_path() / "firmament-atmosphere-tables-suite"; }
+    static void SetUpTestSuite() { std::filesystem::remove_all(suiteTables()); }
+    static void TearDownTestSuite() { std::filesystem::remove_all(suiteTables()); }
+
     // Single scattering only unless `orders` says otherwise: most tests need no more, and the
-    // higher orders take most of the time on the WARP device.
+    // higher orders take most of the time on the WARP device. Computed once per suite run and
+    // loaded by the tests after the first (computeOrLoadYusovTables).
     std::unique_ptr<YusovPrecomputation> precompute(LutResolution resolution, int orders = 1) {
-        return computeYusovTables(device(), context(), *productShaderLibrary, resolution, orders);
+        return computeOrLoadYusovTables(device(), context(), *productShaderLibrary, resolution, orders, suiteTables());
     }
 
     // Runs lookup_probe.hlsl's `entry` over the queries.
