@@ -17,9 +17,8 @@ void main(uint3 id : SV_DispatchThreadID) {
     float2 uv = (id.xy + 0.5) / n;
     float4 farPoint = mul(frame.clipToDirection, float4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, 1.0, 1.0));
     float3 direction = normalize(farPoint.xyz / farPoint.w);
-    HillaireCamera cam = hillaireCamera(frame, atmosphere);
-    HillaireView v = hillaireViewAlong(min(cam.r, atmosphere.earth.z), cam.inSpace ? hillaireHorizonDistanceSquared(atmosphere, atmosphere.earth.z) : cam.rho2,
-                                       cam.up, direction, frame.directionToSun.xyz);
+    HillaireCamera cam = hillaireCameraInAtmosphere(frame, atmosphere);
+    HillaireView v = hillaireViewAlong(cam.r, cam.rho2, cam.up, direction, frame.directionToSun.xyz);
     float sliceDepth = hillaire.aerialPerspective.y / (n - 1);
     int steps = (int)hillaire.aerialPerspective.z;
     HillaireSegment s = hillaireEmptySegment();

@@ -27,6 +27,17 @@ HillaireCamera hillaireCamera(FrameConstants f, AtmosphereConstants a) {
     return cam;
 }
 
+// The same camera held at the top of the atmosphere when it is above it: where the tables that
+// follow the camera are made (from space they are not read; render.hlsl marches each pixel).
+HillaireCamera hillaireCameraInAtmosphere(FrameConstants f, AtmosphereConstants a) {
+    HillaireCamera cam = hillaireCamera(f, a);
+    if (cam.inSpace) {
+        cam.r = a.earth.z;
+        cam.rho2 = hillaireHorizonDistanceSquared(a, a.earth.z);
+    }
+    return cam;
+}
+
 // The view along the unit direction v from radius r (rho2 as above) with the local vertical up.
 HillaireView hillaireViewAlong(float r, float rho2, float3 up, float3 v, float3 sunDir) {
     HillaireView view;

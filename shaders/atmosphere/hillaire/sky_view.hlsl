@@ -11,13 +11,11 @@ RWTexture2D<float4> skyView : register(u0);
 void main(uint3 id : SV_DispatchThreadID) {
     float2 size = hillaire.skyView.xy;
     if (id.x >= (uint)size.x || id.y >= (uint)size.y) return;
-    HillaireCamera cam = hillaireCamera(frame, atmosphere);
-    float r = min(cam.r, atmosphere.earth.z);
-    float rho2 = cam.inSpace ? hillaireHorizonDistanceSquared(atmosphere, r) : cam.rho2;
-    float2 direction = hillaireSkyViewDirection(atmosphere, r, (float2)id.xy / (size - 1.0));
+    HillaireCamera cam = hillaireCameraInAtmosphere(frame, atmosphere);
+    float2 direction = hillaireSkyViewDirection(atmosphere, cam.r, (float2)id.xy / (size - 1.0));
     HillaireView v;
-    v.r = r;
-    v.rho2 = rho2;
+    v.r = cam.r;
+    v.rho2 = cam.rho2;
     v.mu = direction.x;
     v.muS = dot(cam.up, frame.directionToSun.xyz);
     v.nu = v.mu * v.muS + sqrt(max(1.0 - v.mu * v.mu, 0.0)) * sqrt(max(1.0 - v.muS * v.muS, 0.0)) * direction.y;
