@@ -13,11 +13,13 @@
 #include "reference/ReferenceAtmosphere.h"
 
 #include <Imath/half.h>
+#include <windows.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 
 namespace firmament::test {
 namespace {
@@ -34,7 +36,11 @@ double relativeError(double got, double expected, double floor) {
 
 class AtmosphereTables : public WarpDevice {
 protected:
-    static std::filesystem::path suiteTables() { return std::filesystem::temp_directory_path() / "firmament-atmosphere-tables-suite"; }
+    // One folder per process: ctest runs the suite's slow tests as processes of their own, at
+    // the same time as the rest, and each empties its folder before its first test.
+    static std::filesystem::path suiteTables() {
+        return std::filesystem::temp_directory_path() / ("firmament-atmosphere-tables-suite-" + std::to_string(GetCurrentProcessId()));
+    }
     static void SetUpTestSuite() { std::filesystem::remove_all(suiteTables()); }
     static void TearDownTestSuite() { std::filesystem::remove_all(suiteTables()); }
 
