@@ -14,9 +14,9 @@ struct ScatteringLookup {
     bool ready = false;                                        // false until the tables exist
     ID3D11Buffer* atmosphere = nullptr;                        // AtmosphereConstants
     ID3D11ShaderResourceView* netDensity = nullptr;            // Texture2D: optical depth to the top, by altitude and zenith cosine
-    ID3D11ShaderResourceView* singleScattering = nullptr;      // Texture3D: L^(1), 4D packed
-    ID3D11ShaderResourceView* highOrderScattering = nullptr;   // Texture3D: L^(2) + ... + L^(N)
-    ID3D11ShaderResourceView* multipleScattering = nullptr;    // Texture3D: L^(1) + high orders
+    ID3D11ShaderResourceView* singleScattering = nullptr;      // Texture3D: L^(1), 4D packed, by species (lookUpSpeciesScattering)
+    ID3D11ShaderResourceView* highOrderScattering = nullptr;   // Texture3D: L^(2) + ... + L^(N), radiance
+    ID3D11ShaderResourceView* multipleScattering = nullptr;    // Texture3D: L^(1) + high orders, by species
     ID3D11ShaderResourceView* ambientLight = nullptr;          // Texture2D, N x 1: sky irradiance by sun zenith cosine
     ID3D11SamplerState* linearClamp = nullptr;                 // the sampler every look-up uses
     SingleScatteringMode singleMode = SingleScatteringMode::Table;          // the settings' render modes

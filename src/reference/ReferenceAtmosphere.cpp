@@ -104,6 +104,18 @@ glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 vi
 }
 
 glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool ground) const {
+    const double cosTheta = glm::dot(viewDir, sunDir);
+    return weightedScattering(start, viewDir, sunDir, ground, rayleighPhase(cosTheta), miePhase(cosTheta, p_.mieAsymmetry));
+}
+
+ReferenceAtmosphere::SpeciesScattering ReferenceAtmosphere::singleScatteringBySpecies(const ScatteringCoordinates& c, bool aboveHorizon) const {
+    const Ray r = ray(c);
+    return {weightedScattering(r.start, r.viewDir, r.sunDir, !aboveHorizon, 1.0, 0.0),
+            weightedScattering(r.start, r.viewDir, r.sunDir, !aboveHorizon, 0.0, 1.0)};
+}
+
+glm::dvec3 ReferenceAtmosphere::weightedScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool ground, double rayleigh,
+                                                   double mie) const {
     const double length = rayLength(start, viewDir, ground);
     // Where the ray crosses the boundary of the Earth's shadow: the cylinder of radius R
     // behind the Earth (|q - (q.l) l| = R with q.l < 0) and the plane q.l = 0 closing it.
@@ -120,8 +132,6 @@ glm::dvec3 ReferenceAtmosphere::singleScattering(glm::dvec3 start, glm::dvec3 vi
     std::erase_if(cuts, [&](double s) { return !(s >= 0.0 && s <= length); });
     std::sort(cuts.begin(), cuts.end());
 
-    const double cosTheta = glm::dot(viewDir, sunDir);
-    const double rayleigh = rayleighPhase(cosTheta), mie = miePhase(cosTheta, p_.mieAsymmetry);
     glm::dvec3 total(0.0);
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double s0 = cuts[i], s1 = cuts[i + 1];

@@ -42,6 +42,12 @@ public:
     glm::dvec3 singleScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround) const;
     glm::dvec3 singleScattering(const ScatteringCoordinates& c) const;
     glm::dvec3 singleScattering(const ScatteringCoordinates& c, bool aboveHorizon) const;
+    // The same per species, without the phase functions (what Yusov's tables store): S_R, the
+    // integral of T(C -> P) beta_R rho_R T_sun(P) ds, and S_M.
+    struct SpeciesScattering {
+        glm::dvec3 rayleigh, mie;
+    };
+    SpeciesScattering singleScatteringBySpecies(const ScatteringCoordinates& c, bool aboveHorizon) const;
     // The irradiance single scattering gives a horizontal surface at `position`, by quadrature:
     // the upper half of `directions` equal-area directions (a spherical Fibonacci set, as the
     // tables use), each weighted by its cosine, 2 pi / (directions / 2) each.
@@ -82,6 +88,10 @@ public:
     const AtmosphereParameters& parameters() const { return p_; }
 
 private:
+    // The integral of T(C -> P) (beta_R rho_R w_R + beta_M rho_M w_M) T_sun(P) ds: single
+    // scattering with the weights the phases, or one species with weights 1 and 0.
+    glm::dvec3 weightedScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround, double rayleighWeight,
+                                  double mieWeight) const;
     // One path from `start` along `dir`: the light of orders minOrder..maxOrder it gathers.
     glm::dvec3 tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder, std::mt19937_64& random) const;
 

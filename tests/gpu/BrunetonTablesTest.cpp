@@ -33,12 +33,13 @@ constexpr double kRadianceFloor = 5e-4;  // per unit sun irradiance: about 2% of
 // Bounds, each with what was measured here (see docs/atmosphere.md).
 constexpr double kTransmittanceBound = 0.005;                                       // absolute; measured 2.2e-3
 constexpr double kSingleBound = 0.35, kSingleMedianBound = 0.01, kSingleNinetiethBound = 0.05;  // measured 0.29, 0.0027, 0.027
-constexpr double kAgreeMedianBound = 0.02, kAgreeNinetiethBound = 0.10;              // measured 0.011, 0.071
-constexpr double kAgreeMultipleMedianBound = 0.08, kAgreeMultipleNinetiethBound = 0.25;  // measured 0.051, 0.18
+// The agreement with Yusov's tables: 0.011, 0.071 and 0.051, 0.18 while his stored the phases applied.
+constexpr double kAgreeMedianBound = 0.01, kAgreeNinetiethBound = 0.06;              // measured 0.0030, 0.037
+constexpr double kAgreeMultipleMedianBound = 0.04, kAgreeMultipleNinetiethBound = 0.18;  // measured 0.016, 0.13
 constexpr double kHemisphereBound = 0.03;                                            // measured 0.8-2.3%
-constexpr double kIrradianceBound = 0.045;  // measured 3.9% (sun up to 48 degrees; 2.9% before Yusov's single scattering nodes were spaced by altitude)
+constexpr double kIrradianceBound = 0.065;  // measured 3.3% with the sun up to 48 degrees, 5.6% at the zenith
 constexpr double kHighOrderBound = 0.30;                                             // measured 3-23%
-constexpr double kAureoleRedBound = 0.02, kAureoleRebuiltBound = 0.40, kAureoleYusovBound = 0.12;  // measured 0.1%, 33%, 9%
+constexpr double kAureoleRedBound = 0.02, kAureoleRebuiltBound = 0.40, kAureoleYusovBound = 0.02;  // measured 0.1%, 33%, 0.4%
 constexpr double kBounceBound = 0.15;                                                // measured 0-14%
 
 class BrunetonModel : public WarpDevice {
@@ -157,10 +158,11 @@ TEST_F(BrunetonModel, ModelsAgreeOnMultipleScatteringOverABlackGround) {
 // The sky's irradiance on the ground: Bruneton's E sums the sky light of orders 1 to N - 1
 // (order N's light feeds no further order), Yusov's ambient light table integrates his
 // multiple scattering table, orders 1 to N. So Bruneton with 4 orders (black ground) is
-// compared with Yusov with 3, at Yusov's texels of sun elevation 0 to 48 degrees. Higher suns
-// are left out: there Yusov's table is off by up to 15% (AtmosphereLutTest's ambient light
-// test: the sky around a high sun is read where his 4D table is coarsest), and Bruneton's
-// irradiance is checked against the hemisphere integral instead (the test after this one).
+// compared with Yusov with 3, at Yusov's texels of sun elevation 0 to 90 degrees. Each is held
+// to the reference on its own (AtmosphereLutTest's ambient light tests, and the two after this
+// one); this checks that they light the ground alike. Suns above 48 degrees were left out while
+// Yusov's tables stored the light with the phases applied: his ambient light was up to 15% off
+// there. Now the two differ most with the sun at the zenith, by 5.6%.
 TEST_F(BrunetonModel, SkyIrradianceAgreesWithYusovsAmbientLight) {
     const auto b = bruneton(LutResolution::Medium, 4, 0.0);
     const auto y = yusov(LutResolution::Medium, 3);
@@ -169,7 +171,7 @@ TEST_F(BrunetonModel, SkyIrradianceAgreesWithYusovsAmbientLight) {
     const int n = p.lut.ambientLight;
     std::vector<Query> queries;
     std::vector<int> texels;
-    for (int texel = n / 2 + 4; texel < n * 5 / 6; texel += n / 16) {
+    for (int texel = n / 2 + 4; texel < n; texel = texel + n / 16 < n ? texel + n / 16 : (texel == n - 1 ? n : n - 1)) {
         const double cosSun = texel / (n - 1.0) * 2.0 - 1.0;
         queries.push_back({glm::vec4(0.0f, static_cast<float>(p.earthRadius + 1.0), 0.0f, 0.0f), glm::vec4(0.0f),
                            glm::vec4(static_cast<float>(std::sqrt(1.0 - cosSun * cosSun)), static_cast<float>(cosSun), 0.0f, 0.0f)});
@@ -371,7 +373,9 @@ TEST_F(BrunetonModel, TableFilesRoundTripAndRefuseBadFiles) {
 // matches the reference within kAureoleRedBound (measured 0.1%); its green and blue come from
 // the red by the ratio of the species (mieFromRed), which a low sun's reddening breaks: up to
 // 33% high here, a property of the 2008 model (kAureoleRebuiltBound bounds it). Yusov's table
-// bakes the phase functions into 16 sun-view slices: within kAureoleYusovBound (measured 9%).
+// keeps each species in all three channels and applies the phases at look-up too: within
+// kAureoleYusovBound (measured 0.4%; 9% when it stored the light with the phases applied, which
+// blurred the Mie peak over 16 sun-view slices).
 TEST_F(BrunetonModel, AureoleOfALowSun) {
     const auto b = bruneton(LutResolution::Full, 1, 0.0);
     const auto y = yusov(LutResolution::Full, 1);

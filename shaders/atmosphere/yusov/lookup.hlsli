@@ -2,7 +2,8 @@
 #define FIRMAMENT_LUT_LOOKUP_HLSLI
 // Look-ups into the pre-computed tables: the net density to the atmosphere's top (2D) and
 // the 4D scattering tables packed into 3D textures (Yusov 2013, "Performing look-ups into
-// the table").
+// the table"). The single and all-orders tables hold two banks of altitude texels side by side,
+// one per species (lookUpSpeciesScattering).
 #include "atmosphere/yusov/parameterization.hlsli"
 
 // Net density table: u is the cosine of the zenith angle, linear over [-1, 1]; v is the
@@ -28,11 +29,26 @@ static const int kHorizonUndecided = -1;
 static const int kBelowHorizon = 0;
 static const int kAboveHorizon = 1;
 
-// The in-scattered radiance, per unit sun irradiance, stored in a 4D table for the point
-// `position` (relative to the Earth's centre) looking along viewDir with the sun along sunDir.
-// Trilinear in the 3D texture, linear between the two sun-view slices.
-float3 lookUpScattering(AtmosphereConstants a, Texture3D<float4> lut, SamplerState linearClamp, float3 position, float3 viewDir,
-                        float3 sunDir, inout int horizonSide) {
+// Light scattered by each species, without its phase function: S_R and S_M.
+struct SpeciesScattering {
+    float3 rayleigh;
+    float3 mie;
+};
+
+// L = P_R(v.l) S_R + P_M(v.l) S_M.
+float3 withPhases(AtmosphereConstants a, SpeciesScattering s, float cosTheta) {
+    return s.rayleigh * rayleighPhase(cosTheta) + s.mie * miePhase(cosTheta, a.mieScattering.w);
+}
+
+// Where a look-up reads the packed 4D table for the point `position` (relative to the Earth's
+// centre) looking along viewDir with the sun along sunDir: the texture coordinates in the two
+// sun-view slices around it, and the weight of the second. u spans one bank of altitude texels.
+struct TableSample {
+    float3 uvw0, uvw1;
+    float weight;
+};
+
+TableSample tableSample(AtmosphereConstants a, float3 position, float3 viewDir, float3 sunDir, inout int horizonSide) {
     float radius = length(position);
     float3 up = position / radius;
     float h = clamp(radius - a.earth.x, 0.0, a.earth.y);
@@ -44,16 +60,48 @@ float3 lookUpScattering(AtmosphereConstants a, Texture3D<float4> lut, SamplerSta
     bool above = horizonSide == kAboveHorizon;
 
     float4 n = a.scatteringLutSize;
-    float3 uvw0;
-    uvw0.x = unitToTexture(altitudeToUnit(a, h), n.x);
-    uvw0.y = viewZenithToTexture(viewZenithToUnit(cosView, cosHorizonAngle, above), n.y, above);
+    TableSample t;
+    t.uvw0.x = unitToTexture(altitudeToUnit(a, h), n.x);
+    t.uvw0.y = viewZenithToTexture(viewZenithToUnit(cosView, cosHorizonAngle, above), n.y, above);
     float sunZenith = unitToTexture(sunZenithToUnit(cosSun), n.z);
     float slice = sunViewToUnit(cosSunView) * (n.w - 1.0);
     float slice0 = clamp(floor(slice), 0.0, n.w - 2.0);
-    float weight = saturate(slice - slice0);
-    uvw0.z = (slice0 + sunZenith) / n.w;
-    float3 uvw1 = float3(uvw0.xy, uvw0.z + 1.0 / n.w);
-    return lerp(lut.SampleLevel(linearClamp, uvw0, 0).rgb, lut.SampleLevel(linearClamp, uvw1, 0).rgb, weight);
+    t.weight = saturate(slice - slice0);
+    t.uvw0.z = (slice0 + sunZenith) / n.w;
+    t.uvw1 = float3(t.uvw0.xy, t.uvw0.z + 1.0 / n.w);
+    return t;
+}
+
+// Trilinear in the 3D texture, linear between the two sun-view slices; `bank` of `banks` side by
+// side along u.
+float3 sampleTable(Texture3D<float4> lut, SamplerState linearClamp, TableSample t, float bank, float banks) {
+    float3 shift = float3(bank, 0.0, 0.0);
+    float3 scale = float3(1.0 / banks, 1.0, 1.0);
+    return lerp(lut.SampleLevel(linearClamp, (t.uvw0 + shift) * scale, 0).rgb, lut.SampleLevel(linearClamp, (t.uvw1 + shift) * scale, 0).rgb,
+                t.weight);
+}
+
+// The in-scattered radiance, per unit sun irradiance, of a table that stores it as it is: the
+// higher orders of scattering, which the integrals over the sphere leave smooth in the sun-view
+// angle.
+float3 lookUpScattering(AtmosphereConstants a, Texture3D<float4> lut, SamplerState linearClamp, float3 position, float3 viewDir,
+                        float3 sunDir, inout int horizonSide) {
+    return sampleTable(lut, linearClamp, tableSample(a, position, viewDir, sunDir, horizonSide), 0.0, 1.0);
+}
+
+// The same from a table of species, which stores S_R in its first bank of altitude texels and
+// S_M in its second, and the radiance with the phases applied here. The phases carry the aerosols'
+// forward peak, which no interpolation between sun-view slices resolves: the table with the phases
+// applied read up to twice the light near the zenith under a high sun (docs/atmosphere.md, "A
+// table of species"). The all-orders table stores the higher orders in its Rayleigh bank, divided
+// by P_R at its texels (Bruneton and Neyret 2008 do the same).
+float3 lookUpSpeciesScattering(AtmosphereConstants a, Texture3D<float4> lut, SamplerState linearClamp, float3 position, float3 viewDir,
+                               float3 sunDir, inout int horizonSide) {
+    TableSample t = tableSample(a, position, viewDir, sunDir, horizonSide);
+    SpeciesScattering s;
+    s.rayleigh = sampleTable(lut, linearClamp, t, 0.0, 2.0);
+    s.mie = sampleTable(lut, linearClamp, t, 1.0, 2.0);
+    return withPhases(a, s, dot(viewDir, sunDir));
 }
 
 #endif

@@ -29,7 +29,7 @@ void main(uint3 id : SV_DispatchThreadID) {
         float3 w = sphereDirections[i].xyz;
         w.y = abs(w.y);
         int side = kHorizonUndecided;
-        irradiance += lookUpScattering(atmosphere, multipleTable, linearClamp, position, w, sunDir, side) * w.y;
+        irradiance += lookUpSpeciesScattering(atmosphere, multipleTable, linearClamp, position, w, sunDir, side) * w.y;
     }
     ambientLight[id.xy] = float4(irradiance * (2.0 * kPi / count), 0.0);
 }

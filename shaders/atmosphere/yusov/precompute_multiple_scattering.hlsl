@@ -5,7 +5,8 @@
 //   scatteringOrder:   L^(n)(C, v, l) = integral over the view ray of T(C -> P) J^(n)(P, v, l) ds
 //       (eq. 2, trapezoidal), and the high-order sum L^H += L^(n);
 // then combine: L^M = L^(1) + L^H. Every table is 4D packed into 3D, one thread per texel, in
-// slabs of z (PrecomputeSliceConstants).
+// slabs of z (PrecomputeSliceConstants); the single and all-orders tables hold a bank of texels
+// per species (lookup.hlsli).
 #include "atmosphere/yusov/lookup.hlsli"
 #include "atmosphere/yusov/single_scattering.hlsli"
 
@@ -37,8 +38,9 @@ Texture3D<float4> previousOrder : register(t0);
 StructuredBuffer<float4> sphereDirections : register(t1);
 RWTexture3D<float4> scattered : register(u0);
 
-[numthreads(4, 8, 4)]
-void scatteredRadiance(uint3 id : SV_DispatchThreadID) {
+// J^(n) at this dispatch's texel; order n - 1 is the single scattering table of species when
+// `fromSingle` (n = 2), a table of radiance after.
+void gatherScattered(uint3 id, bool fromSingle) {
     TexelRay ray;
     if (!texelRay(id, ray)) return;
     float3 density = particleDensity(atmosphere, ray.altitude);
@@ -47,11 +49,18 @@ void scatteredRadiance(uint3 id : SV_DispatchThreadID) {
     for (uint i = 0; i < count; ++i) {
         float3 w = sphereDirections[i].xyz;
         int side = kHorizonUndecided;
-        float3 incoming = lookUpScattering(atmosphere, previousOrder, linearClamp, ray.start, w, ray.sunDir, side);
+        float3 incoming = fromSingle ? lookUpSpeciesScattering(atmosphere, previousOrder, linearClamp, ray.start, w, ray.sunDir, side)
+                                     : lookUpScattering(atmosphere, previousOrder, linearClamp, ray.start, w, ray.sunDir, side);
         sum += scatteringCoefficient(atmosphere, density, dot(ray.viewDir, w)) * incoming;
     }
     scattered[texelOf(id)] = float4(sum * (4.0 * kPi / count), 0.0);
 }
+
+[numthreads(4, 8, 4)]
+void scatteredRadianceFromSingle(uint3 id : SV_DispatchThreadID) { gatherScattered(id, true); }
+
+[numthreads(4, 8, 4)]
+void scatteredRadiance(uint3 id : SV_DispatchThreadID) { gatherScattered(id, false); }
 
 // ---- L^(n) and the high-order sum ----
 Texture3D<float4> scatteredTable : register(t0);   // J^(n)
@@ -87,6 +96,9 @@ void scatteringOrder(uint3 id : SV_DispatchThreadID) {
 }
 
 // ---- L^M = L^(1) + L^H ----
+// A table of species like the single scattering table: S_R + L^H / P_R(v.l) in the Rayleigh bank
+// (P_R at the texel's own sun-view angle), S_M in the Mie bank, so that lookUpSpeciesScattering
+// gives P_R S_R + P_M S_M + L^H.
 Texture3D<float4> singleTable : register(t0);
 Texture3D<float4> highOrderTable : register(t2);
 RWTexture3D<float4> multiple : register(u0);
@@ -96,5 +108,8 @@ void combine(uint3 id : SV_DispatchThreadID) {
     TexelRay ray;
     if (!texelRay(id, ray)) return;
     int4 texel = int4(texelOf(id), 0);
-    multiple[texel.xyz] = float4(singleTable.Load(texel).rgb + highOrderTable.Load(texel).rgb, 0.0);
+    int4 mieTexel = texel + int4((int)atmosphere.scatteringLutSize.x, 0, 0, 0);
+    float phase = rayleighPhase(dot(ray.viewDir, ray.sunDir));
+    multiple[texel.xyz] = float4(singleTable.Load(texel).rgb + highOrderTable.Load(texel).rgb / phase, 0.0);
+    multiple[mieTexel.xyz] = singleTable.Load(mieTexel);
 }

@@ -1,8 +1,9 @@
 // Pre-computation, step 2: single scattering into the 4D table packed into a 3D texture
 // (Yusov 2013, "Computing single scattering"). One thread per texel: its world parameters
 // from the inverse parameterization, then the integral along the view ray to the top of the
-// atmosphere or the ground. Run in slabs of z (PrecomputeSliceConstants) so that no dispatch
-// holds the device for long.
+// atmosphere or the ground, S_R into the table's first bank of altitude texels and S_M into its
+// second, without their phases (lookup.hlsli, lookUpSpeciesScattering). Run in slabs of z
+// (PrecomputeSliceConstants) so that no dispatch holds the device for long.
 #include "atmosphere/yusov/single_scattering.hlsli"
 
 cbuffer AtmosphereBuffer : register(b0) {
@@ -25,7 +26,8 @@ void main(uint3 id : SV_DispatchThreadID) {
     if (texel.x >= (uint)n.x || texel.y >= (uint)n.y || texel.z >= slab.range.y) return;
     TexelRay ray = texelRay(atmosphere, texel);
     float rayLength = rayLengthInAtmosphere(atmosphere, ray.start, ray.viewDir, ray.belowHorizon);
-    float3 radiance = integrateSingleScattering(atmosphere, netDensityLut, linearClamp, ray.start, ray.viewDir, ray.sunDir, rayLength,
-                                                kIntegrationSteps);
-    singleScattering[texel] = float4(radiance, 0.0);
+    SpeciesScattering s = integrateSpeciesScattering(atmosphere, netDensityLut, linearClamp, ray.start, ray.viewDir, ray.sunDir, rayLength,
+                                                     kIntegrationSteps);
+    singleScattering[texel] = float4(s.rayleigh, 0.0);
+    singleScattering[texel + uint3((uint)n.x, 0, 0)] = float4(s.mie, 0.0);
 }

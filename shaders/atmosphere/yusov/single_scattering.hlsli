@@ -2,10 +2,12 @@
 #define FIRMAMENT_SINGLE_SCATTERING_HLSLI
 // Single scattering along a ray by quadrature (Yusov 2013, "Computing single
 // scattering"; Bruneton and Neyret 2008, eq. 5 without the ground):
-//   L1(C, v, l) = integral over [0, D] of T(C -> P) (beta_R rho_R(h) P_R(v.l) + beta_M rho_M(h) P_M(v.l)) T_sun(P) ds
+//   L1(C, v, l) = P_R(v.l) S_R + P_M(v.l) S_M,
+//   S_R = integral over [0, D] of T(C -> P) beta_R rho_R(h) T_sun(P) ds, S_M the same with beta_M rho_M,
 // per unit sun irradiance, where T(C -> P) comes from the densities summed along the way and
-// T_sun(P) from the net density table. The nodes crowd where the air is densest and the view ray
-// still clear (RaySpacing).
+// T_sun(P) from the net density table. The phases are constant along the ray, so the quadrature
+// sums each species without its phase (what the tables store) and applies the phases at the end.
+// The nodes crowd where the air is densest and the view ray still clear (RaySpacing).
 #include "atmosphere/yusov/lookup.hlsli"
 
 // Where a ray from `start` (relative to the Earth's centre) along viewDir leaves the
@@ -125,11 +127,19 @@ void stepGeometricWalk(AtmosphereConstants a, RaySpacing r, float3 start, float3
 struct ScatteringSum {
     float distance;
     float3 density;
-    float3 netDensity;         // from the start
-    float3 sunTransmittance;   // at the last node
-    float3 integrand;          // scattered towards the camera at the last node, per unit length
-    float3 inscattering;       // the integral so far
+    float3 netDensity;             // from the start
+    float3 sunTransmittance;       // at the last node
+    SpeciesScattering integrand;   // scattered at the last node towards the camera, per unit length
+    SpeciesScattering integral;    // the integral so far
 };
+
+// The integrand at a node of densities `density`, seen through `transmittance` and lit by `sun`.
+SpeciesScattering scatteringIntegrand(AtmosphereConstants a, float3 density, float3 transmittance, float3 sun) {
+    SpeciesScattering s;
+    s.rayleigh = a.rayleighScattering.rgb * density.x * transmittance * sun;
+    s.mie = a.mieScattering.rgb * density.y * transmittance * sun;
+    return s;
+}
 
 // The sun's transmittance to a node.
 float3 sunTransmittanceAt(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 position, float3 sunDir) {
@@ -153,36 +163,38 @@ float3 stepMeanIntegrand(float3 integrand0, float3 integrand1, float3 sun0, floa
 
 // Adds the step from the last node to the node at `distance`.
 void addScatteringNode(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 start, float3 viewDir,
-                       float3 sunDir, float cosTheta, float distance, inout ScatteringSum sum) {
+                       float3 sunDir, float distance, inout ScatteringSum sum) {
     float stepLength = max(distance - sum.distance, 0.0);
     float3 position = start + viewDir * distance;
     float3 density = particleDensity(a, length(position) - a.earth.x);
     sum.netDensity += stepNetDensity(sum.density, density, stepLength);
     float3 sun = sunTransmittanceAt(a, netDensityLut, linearClamp, position, sunDir);
-    float3 integrand = scatteringCoefficient(a, density, cosTheta) * exp(-opticalDepth(a, sum.netDensity)) * sun;
-    sum.inscattering += stepMeanIntegrand(sum.integrand, integrand, sum.sunTransmittance, sun) * stepLength;
+    SpeciesScattering integrand = scatteringIntegrand(a, density, exp(-opticalDepth(a, sum.netDensity)), sun);
+    sum.integral.rayleigh += stepMeanIntegrand(sum.integrand.rayleigh, integrand.rayleigh, sum.sunTransmittance, sun) * stepLength;
+    sum.integral.mie += stepMeanIntegrand(sum.integrand.mie, integrand.mie, sum.sunTransmittance, sun) * stepLength;
     sum.distance = distance;
     sum.density = density;
     sum.sunTransmittance = sun;
     sum.integrand = integrand;
 }
 
-float3 integrateSingleScattering(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 start,
-                                 float3 viewDir, float3 sunDir, float rayLength, int steps) {
+// S_R and S_M along the ray.
+SpeciesScattering integrateSpeciesScattering(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 start,
+                                             float3 viewDir, float3 sunDir, float rayLength, int steps) {
     RaySpacing spacing = raySpacing(a, start, viewDir, rayLength, steps);
     // The ray's whole green optical depth, over the geometric nodes: where G ends.
     GeometricWalk walk = beginGeometricWalk(a, start);
     [loop] for (int i = 1; i <= steps; ++i) stepGeometricWalk(a, spacing, start, viewDir, rayLength, steps, i, walk);
     float placementEnd = 2.0 - exp(-walk.depth);
 
-    float cosTheta = dot(viewDir, sunDir);
     ScatteringSum sum;
     sum.distance = 0.0;
     sum.density = particleDensity(a, length(start) - a.earth.x);
     sum.netDensity = 0.0;
     sum.sunTransmittance = sunTransmittanceAt(a, netDensityLut, linearClamp, start, sunDir);
-    sum.integrand = scatteringCoefficient(a, sum.density, cosTheta) * sum.sunTransmittance;
-    sum.inscattering = 0.0;
+    sum.integrand = scatteringIntegrand(a, sum.density, 1.0, sum.sunTransmittance);
+    sum.integral.rayleigh = 0.0;
+    sum.integral.mie = 0.0;
     // The nodes at equal steps of G, found while walking the geometric nodes again: within each
     // geometric step G is taken as linear in the distance.
     walk = beginGeometricWalk(a, start);
@@ -194,12 +206,19 @@ float3 integrateSingleScattering(AtmosphereConstants a, Texture2D<float4> netDen
         placement = (float)j / steps + 1.0 - exp(-walk.depth);
         [loop] while (node < steps && placementEnd * node / steps <= placement) {
             float share = (placementEnd * node / steps - fromPlacement) / (placement - fromPlacement);
-            addScatteringNode(a, netDensityLut, linearClamp, start, viewDir, sunDir, cosTheta, lerp(fromDistance, walk.distance, share), sum);
+            addScatteringNode(a, netDensityLut, linearClamp, start, viewDir, sunDir, lerp(fromDistance, walk.distance, share), sum);
             ++node;
         }
     }
-    addScatteringNode(a, netDensityLut, linearClamp, start, viewDir, sunDir, cosTheta, rayLength, sum);
-    return sum.inscattering;
+    addScatteringNode(a, netDensityLut, linearClamp, start, viewDir, sunDir, rayLength, sum);
+    return sum.integral;
+}
+
+// L1 along the ray.
+float3 integrateSingleScattering(AtmosphereConstants a, Texture2D<float4> netDensityLut, SamplerState linearClamp, float3 start,
+                                 float3 viewDir, float3 sunDir, float rayLength, int steps) {
+    SpeciesScattering s = integrateSpeciesScattering(a, netDensityLut, linearClamp, start, viewDir, sunDir, rayLength, steps);
+    return withPhases(a, s, dot(viewDir, sunDir));
 }
 
 #endif

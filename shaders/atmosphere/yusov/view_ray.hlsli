@@ -36,9 +36,9 @@ struct ViewRay {
 };
 
 float3 lookUpTable(uint table, float3 position, float3 viewDir, float3 sunDir, int side) {
-    if (table == kSingleTable) return lookUpScattering(atmosphere, singleScatteringLut, linearClamp, position, viewDir, sunDir, side);
+    if (table == kSingleTable) return lookUpSpeciesScattering(atmosphere, singleScatteringLut, linearClamp, position, viewDir, sunDir, side);
     if (table == kHighOrderTable) return lookUpScattering(atmosphere, highOrderScatteringLut, linearClamp, position, viewDir, sunDir, side);
-    return lookUpScattering(atmosphere, multipleScatteringLut, linearClamp, position, viewDir, sunDir, side);
+    return lookUpSpeciesScattering(atmosphere, multipleScatteringLut, linearClamp, position, viewDir, sunDir, side);
 }
 
 float3 transmittanceTo(ViewRay ray, float s) {

@@ -7,6 +7,7 @@ namespace firmament {
 namespace {
 const ShaderKey kNetDensity{"atmosphere/yusov/precompute_net_density.hlsl", "main", "cs_5_0", {}};
 const ShaderKey kSingleScattering{"atmosphere/yusov/precompute_single_scattering.hlsl", "main", "cs_5_0", {}};
+const ShaderKey kScatteredRadianceFromSingle{"atmosphere/yusov/precompute_multiple_scattering.hlsl", "scatteredRadianceFromSingle", "cs_5_0", {}};
 const ShaderKey kScatteredRadiance{"atmosphere/yusov/precompute_multiple_scattering.hlsl", "scatteredRadiance", "cs_5_0", {}};
 const ShaderKey kScatteringOrder{"atmosphere/yusov/precompute_multiple_scattering.hlsl", "scatteringOrder", "cs_5_0", {}};
 const ShaderKey kCombine{"atmosphere/yusov/precompute_multiple_scattering.hlsl", "combine", "cs_5_0", {}};
@@ -33,8 +34,9 @@ YusovPrecomputation::YusovPrecomputation(ID3D11Device* device, const AtmosphereP
     const LutDimensions& n = parameters_.lut;
     const glm::ivec3 packed = n.packed3d();
     tables_.netDensity = createColorTexture(device, n.netDensityZenith, n.netDensityHeight, DXGI_FORMAT_R32G32B32A32_FLOAT, kReadWrite);
-    tables_.singleScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
-    tables_.multipleScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
+    // The tables of species: a bank of altitude texels for Rayleigh, one for Mie, side by side.
+    tables_.singleScattering = createTexture3D(device, 2 * packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
+    tables_.multipleScattering = createTexture3D(device, 2 * packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
     tables_.ambientLight = createColorTexture(device, n.ambientLight, 1, kTableFormat, kReadWrite);
     tables_.highOrderScattering = createTexture3D(device, packed.x, packed.y, packed.z, kTableFormat, kReadWrite);
 
@@ -78,7 +80,8 @@ std::string stageName(YusovStage stage, int order) {
 }
 
 std::span<const ShaderKey> yusovPrecomputeShaders() {
-    static const ShaderKey all[] = {kNetDensity, kSingleScattering, kScatteredRadiance, kScatteringOrder, kCombine, kAmbientLight};
+    static const ShaderKey all[] = {kNetDensity,      kSingleScattering, kScatteredRadianceFromSingle, kScatteredRadiance,
+                                    kScatteringOrder, kCombine,          kAmbientLight};
     return all;
 }
 
@@ -123,7 +126,8 @@ void runUnit(ID3D11DeviceContext* context, ShaderLibrary& shaders, const WorkUni
             break;
         case YusovStage::ScatteredRadiance: {
             ID3D11ShaderResourceView* previous = o == 2 ? tables.singleScattering.srv.Get() : scratch.orders[(o - 1) % 2].srv.Get();
-            bind(kScatteredRadiance, {previous, scratch.inputs.sphereDirections()}, {scratch.scattered.uav.Get()});
+            bind(o == 2 ? kScatteredRadianceFromSingle : kScatteredRadiance, {previous, scratch.inputs.sphereDirections()},
+                 {scratch.scattered.uav.Get()});
             dispatchTable();
             break;
         }

@@ -1,10 +1,11 @@
 #pragma once
 // Fills the atmosphere's look-up tables on the GPU (Yusov 2013, frame order step 1):
 //   1. net density to the top of the atmosphere, 2D (precompute_net_density.hlsl);
-//   2. single scattering L^(1), 4D packed into 3D (precompute_single_scattering.hlsl);
+//   2. single scattering L^(1), 4D packed into 3D, each species without its phase function
+//      (precompute_single_scattering.hlsl);
 //   3. for each order n = 2..N: J^(n) over the sphere, then L^(n) along the view rays and the
 //      high-order sum L^H (precompute_multiple_scattering.hlsl);
-//   4. the multiple scattering table L^M = L^(1) + L^H;
+//   4. the multiple scattering table L^M = L^(1) + L^H, by species like L^(1);
 //   5. the ambient sky light, 1D (precompute_ambient_light.hlsl).
 // The work is cut into units (blocks of rows, slabs of z slices) of a fraction of a second each
 // on the WARP device, so that a recompute can run one unit per frame and the window stays
@@ -23,9 +24,10 @@ namespace firmament {
 // The tables, as the renderer reads them.
 struct YusovTables {
     Texture2D netDensity;           // R32G32B32A32_FLOAT: (zenith cosine, altitude) -> Rayleigh, Mie, ozone net density
-    Texture3D singleScattering;     // R16G16B16A16_FLOAT: L^(1) per unit sun irradiance, packed 4D
-    Texture3D highOrderScattering;  //   L^H = L^(2) + ... + L^(N)
-    Texture3D multipleScattering;   //   L^M = L^(1) + L^H
+    Texture3D singleScattering;     // R16G16B16A16_FLOAT: L^(1) per unit sun irradiance, packed 4D, by species: S_R in
+                                    //   altitude texels [0, N), S_M in [N, 2N), without their phases
+    Texture3D highOrderScattering;  //   L^H = L^(2) + ... + L^(N), radiance
+    Texture3D multipleScattering;   //   L^M = L^(1) + L^H by species: S_R + L^H / P_R, then S_M
     Texture2D ambientLight;         // R16G16B16A16_FLOAT, N x 1: sky irradiance on the ground per unit sun irradiance
 };
 

@@ -11,7 +11,7 @@ namespace firmament {
 
 namespace {
 
-constexpr int kFormatVersion = 2;  // raise when the files' layout changes
+constexpr int kFormatVersion = 3;  // raise when the files' layout changes
 
 std::string dimensions(const LutDimensions& n) {
     char text[128];
@@ -36,46 +36,52 @@ struct FourDimensionalTable {
     const Texture3D* texture;
     const char* file;
     const char* name;
+    int banks;  // of altitude texels side by side: 2 for the tables of species (Rayleigh, Mie)
 };
 
 std::vector<FourDimensionalTable> fourDimensionalTables(const YusovTables& t) {
-    return {{&t.singleScattering, "single-scattering.exr", "single scattering L^(1), per unit sun irradiance (1/sr)"},
-            {&t.highOrderScattering, "high-order-scattering.exr", "high-order scattering L^H = L^(2) + ... + L^(N), per unit sun irradiance (1/sr)"},
-            {&t.multipleScattering, "multiple-scattering.exr", "multiple scattering L^M = L^(1) + L^H, per unit sun irradiance (1/sr)"}};
+    return {{&t.singleScattering, "single-scattering.exr",
+             "single scattering L^(1) by species without the phase functions: S_R, then S_M, per unit sun irradiance", 2},
+            {&t.highOrderScattering, "high-order-scattering.exr", "high-order scattering L^H = L^(2) + ... + L^(N), per unit sun irradiance (1/sr)", 1},
+            {&t.multipleScattering, "multiple-scattering.exr",
+             "multiple scattering L^M = L^(1) + L^H by species: S_R + L^H / P_R(cos sun-view), then S_M, per unit sun irradiance", 2}};
 }
 
-std::string tiledLayout(const LutDimensions& n) {
-    return "tiles of " + std::to_string(n.height) + " x " + std::to_string(n.viewZenith) +
-           " texels: x altitude, y view zenith (rows 0 to N/2-1 below the horizon, from it downwards; rows N/2 to N-1 above it, "
+std::string tiledLayout(const LutDimensions& n, int banks) {
+    const std::string x = banks == 2 ? "x altitude, the Rayleigh bank (" + std::to_string(n.height) + ") then the Mie bank" : "x altitude";
+    return "tiles of " + std::to_string(banks * n.height) + " x " + std::to_string(n.viewZenith) + " texels: " + x +
+           ", y view zenith (rows 0 to N/2-1 below the horizon, from it downwards; rows N/2 to N-1 above it, "
            "from it up to the zenith). Tile column: sun zenith (" + std::to_string(n.sunZenith) + "), tile row: sun-view angle (" +
            std::to_string(n.sunView) + "). The GPU's 3D texture is the tiles stacked as z = row * " + std::to_string(n.sunZenith) +
            " + column.";
 }
 
-// The packed 3D table (half RGBA) as a 2D image of tiles, and back.
-HalfRgbaImage tileVolume(const ReadbackVolume& volume, const LutDimensions& n) {
-    HalfRgbaImage image{n.height * n.sunZenith, n.viewZenith * n.sunView, {}};
+// The packed 3D table (half RGBA, `banks` * N_h texels wide) as a 2D image of tiles, and back.
+HalfRgbaImage tileVolume(const ReadbackVolume& volume, const LutDimensions& n, int banks) {
+    const int tileWidth = banks * n.height;
+    HalfRgbaImage image{tileWidth * n.sunZenith, n.viewZenith * n.sunView, {}};
     image.halfBits.resize(static_cast<size_t>(image.width) * image.height * 4);
     for (int z = 0; z < volume.depth; ++z) {
         const int column = z % n.sunZenith, row = z / n.sunZenith;
         for (int y = 0; y < volume.height; ++y) {
             const size_t from = (static_cast<size_t>(z) * volume.height + y) * volume.width * 8;
-            const size_t to = ((static_cast<size_t>(row) * n.viewZenith + y) * image.width + column * n.height) * 4;
+            const size_t to = ((static_cast<size_t>(row) * n.viewZenith + y) * image.width + column * tileWidth) * 4;
             std::memcpy(image.halfBits.data() + to, volume.bytes.data() + from, static_cast<size_t>(volume.width) * 8);
         }
     }
     return image;
 }
 
-std::vector<std::uint16_t> untileVolume(const HalfRgbaImage& image, const LutDimensions& n) {
+std::vector<std::uint16_t> untileVolume(const HalfRgbaImage& image, const LutDimensions& n, int banks) {
     const glm::ivec3 packed = n.packed3d();
-    std::vector<std::uint16_t> volume(static_cast<size_t>(packed.x) * packed.y * packed.z * 4);
+    const int tileWidth = banks * packed.x;
+    std::vector<std::uint16_t> volume(static_cast<size_t>(tileWidth) * packed.y * packed.z * 4);
     for (int z = 0; z < packed.z; ++z) {
         const int column = z % n.sunZenith, row = z / n.sunZenith;
         for (int y = 0; y < packed.y; ++y) {
-            const size_t to = (static_cast<size_t>(z) * packed.y + y) * packed.x * 4;
-            const size_t from = ((static_cast<size_t>(row) * n.viewZenith + y) * image.width + column * n.height) * 4;
-            std::memcpy(volume.data() + to, image.halfBits.data() + from, static_cast<size_t>(packed.x) * 8);
+            const size_t to = (static_cast<size_t>(z) * packed.y + y) * tileWidth * 4;
+            const size_t from = ((static_cast<size_t>(row) * n.viewZenith + y) * image.width + column * tileWidth) * 4;
+            std::memcpy(volume.data() + to, image.halfBits.data() + from, static_cast<size_t>(tileWidth) * 8);
         }
     }
     return volume;
@@ -112,8 +118,8 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Yusov
         a = commonAttributes(p, key);
         a["firmament.lut.name"] = std::string(table.name);
         a["firmament.lut.dimensions"] = dimensions(n);
-        a["firmament.lut.layout"] = tiledLayout(n);
-        writeExr(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n), a);
+        a["firmament.lut.layout"] = tiledLayout(n, table.banks);
+        writeExr(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n, table.banks), a);
     }
 
     const ReadbackImage ambient = readTexture2D(device, context, tables.tables().ambientLight.texture.Get());
@@ -148,8 +154,8 @@ std::string readTables(ID3D11DeviceContext* context, YusovPrecomputation& tables
         !why.empty())
         return densityPath.string() + ": " + why;
     for (size_t i = 0; i < tableList.size(); ++i)
-        if (auto why = checkTableHeader(fourD[i].attributes, key, n.height * n.sunZenith, n.viewZenith * n.sunView, fourD[i].image.width,
-                                   fourD[i].image.height);
+        if (auto why = checkTableHeader(fourD[i].attributes, key, tableList[i].banks * n.height * n.sunZenith, n.viewZenith * n.sunView,
+                                        fourD[i].image.width, fourD[i].image.height);
             !why.empty())
             return (folder / (prefix + tableList[i].file)).string() + ": " + why;
     if (auto why = checkTableHeader(ambient.attributes, key, n.ambientLight, 1, ambient.image.width, ambient.image.height); !why.empty())
@@ -159,9 +165,10 @@ std::string readTables(ID3D11DeviceContext* context, YusovPrecomputation& tables
                                static_cast<UINT>(density.image.width * 16), 0);
     const glm::ivec3 packed = n.packed3d();
     for (size_t i = 0; i < tableList.size(); ++i) {
-        const auto volume = untileVolume(fourD[i].image, n);
-        context->UpdateSubresource(tableList[i].texture->texture.Get(), 0, nullptr, volume.data(), static_cast<UINT>(packed.x * 8),
-                                   static_cast<UINT>(packed.x * packed.y * 8));
+        const int width = tableList[i].banks * packed.x;
+        const auto volume = untileVolume(fourD[i].image, n, tableList[i].banks);
+        context->UpdateSubresource(tableList[i].texture->texture.Get(), 0, nullptr, volume.data(), static_cast<UINT>(width * 8),
+                                   static_cast<UINT>(width * packed.y * 8));
     }
     context->UpdateSubresource(tables.tables().ambientLight.texture.Get(), 0, nullptr, ambient.image.halfBits.data(),
                                static_cast<UINT>(ambient.image.width * 8), 0);

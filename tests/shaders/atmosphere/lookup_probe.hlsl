@@ -19,14 +19,20 @@ Texture3D<float4> scatteringLut : register(t2);
 SamplerState linearClamp : register(s0);
 RWStructuredBuffer<float4> results : register(u0);
 
-// The scattering table at each query; w: 1 if the look-up used the half above the horizon.
-[numthreads(64, 1, 1)]
-void scattering(uint3 id : SV_DispatchThreadID) {
-    Query q = queries[id.x];
+// A look-up at query q, from a table of species (single scattering, all orders) or of radiance
+// (the higher orders); w: 1 if the look-up used the half above the horizon.
+float4 lookUpAt(Query q, bool species) {
     int side = kHorizonUndecided;
-    float3 radiance = lookUpScattering(atmosphere, scatteringLut, linearClamp, q.position.xyz, q.viewDir.xyz, q.sunDir.xyz, side);
-    results[id.x] = float4(radiance, side == kAboveHorizon ? 1.0 : 0.0);
+    float3 light = species ? lookUpSpeciesScattering(atmosphere, scatteringLut, linearClamp, q.position.xyz, q.viewDir.xyz, q.sunDir.xyz, side)
+                           : lookUpScattering(atmosphere, scatteringLut, linearClamp, q.position.xyz, q.viewDir.xyz, q.sunDir.xyz, side);
+    return float4(light, side == kAboveHorizon ? 1.0 : 0.0);
 }
+
+[numthreads(64, 1, 1)]
+void scattering(uint3 id : SV_DispatchThreadID) { results[id.x] = lookUpAt(queries[id.x], true); }
+
+[numthreads(64, 1, 1)]
+void radiance(uint3 id : SV_DispatchThreadID) { results[id.x] = lookUpAt(queries[id.x], false); }
 
 // The sun's transmittance at each query's position, towards its sun direction.
 [numthreads(64, 1, 1)]
