@@ -6,7 +6,8 @@
 //  - The light at the particle: the sun's irradiance times the atmosphere's transmittance from the
 //    particle to the sun, so that clouds at sunset glow red; and the sky's irradiance there, from
 //    the tables of the model drawn (CLOUD_ATMOSPHERE 1: Yusov 2013's net density and ambient sky
-//    light tables; 2: Bruneton and Neyret 2008's transmittance and irradiance tables).
+//    light tables; 2: Bruneton and Neyret 2008's transmittance and irradiance tables; 3: Hillaire
+//    2020's transmittance table and Firmament's sky irradiance table for his model).
 //  - The particle's radiance: single scattering from the scattering table's sphere of the
 //    particle's optical radius, at the view ray's entry point and direction against the sun,
 //    times the Henyey-Greenstein phase function for the actual angle, lit by the direct sunlight
@@ -15,8 +16,8 @@
 //    sun, or (Multiple scattering: Particle table) the table's; plus the ambient light scattered
 //    by a white cloud (E_sky / pi, brighter at the particle's top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
-//    the atmosphere's transmittance and in-scattering (Yusov's render modes, or Bruneton's
-//    S(x, v) - T S(x0, v)), so that the cloud
+//    the atmosphere's transmittance and in-scattering (Yusov's render modes, Bruneton's
+//    S(x, v) - T S(x0, v), or Hillaire's march), so that the cloud
 //    stands in the haze, and the light scattered behind the cloud is hidden by its opacity:
 //      C = L_behind (1 - a) + a (L_in(camera -> cloud) + T(camera -> cloud) L_cloud).
 //  - Blending (CLOUD_BLENDING; docs/clouds.md, "Blending"): 0 plain alpha blending, the particle's

@@ -1,6 +1,6 @@
 // The clouds' path-traced reference over the frame (Reference (path traced); docs/clouds.md,
 // "Path-traced reference"), through the atmosphere model drawn (CLOUD_ATMOSPHERE 1: Yusov 2013,
-// 2: Bruneton and Neyret 2008; clouds/cloud_atmosphere.hlsli):
+// 2: Bruneton and Neyret 2008, 3: Hillaire 2020; clouds/cloud_atmosphere.hlsli):
 // a thread per pixel traced this pass adds reference.paths.y paths (clouds/reference_paths.hlsli) from the camera
 // through the pixel's centre to its accumulation: the light the paths gathered (per the sun's
 // irradiance above the atmosphere, times it) and how many reached the scene behind the clouds

@@ -201,6 +201,22 @@ BrunetonLookup Atmosphere::brunetonLookup(FrameContext& frame, const AtmosphereS
     return l;
 }
 
+HillaireLookup Atmosphere::hillaireLookup(FrameContext& frame, const AtmosphereSettings& settings) {
+    HillaireLookup l;
+    const HillairePrecomputation* tables = hillaire_.current();
+    if (!settings.enabled || !tables) return l;
+    hillairePhysics_.update(frame.context, tables->parameters().physics.constants());
+    hillaireConstants_.update(frame.context, HillairePass::constants(tables->parameters(), HillaireFrameSampling::from(settings)));
+    l.ready = true;
+    l.atmosphere = hillairePhysics_.get();
+    l.hillaire = hillaireConstants_.get();
+    l.transmittance = tables->tables().transmittance.srv.Get();
+    l.multipleScattering = tables->tables().multipleScattering.srv.Get();
+    l.irradiance = tables->tables().irradiance.srv.Get();
+    l.linearClamp = linearClamp_.Get();
+    return l;
+}
+
 std::vector<TableTiming> Atmosphere::timeTables(ID3D11DeviceContext* context, ShaderLibrary& shaders, const AtmosphereSettings& settings,
                                                 const std::filesystem::path& scratch) {
     std::vector<TableTiming> timings;

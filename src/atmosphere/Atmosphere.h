@@ -10,8 +10,8 @@
 //  - Render steps: the sky where nothing was drawn, and the aerial perspective over geometry,
 //    two passes so that the light shafts can replace the second.
 //  - Hand-offs: the tables that light the ground (GroundLighting, per region of the frame), and
-//    Yusov's and Bruneton's tables for a technique that looks them up itself (ScatteringLookup,
-//    BrunetonLookup).
+//    each model's tables for a technique that looks them up itself (ScatteringLookup,
+//    BrunetonLookup, HillaireLookup).
 // The model comparison stays inside: the ground sees only the regions it is given.
 #include "atmosphere/AtmosphereSettings.h"
 #include "atmosphere/ModelRegions.h"
@@ -22,6 +22,7 @@
 #include "frame/BrunetonLookup.h"
 #include "frame/FrameContext.h"
 #include "frame/GroundLighting.h"
+#include "frame/HillaireLookup.h"
 #include "frame/ScatteringLookup.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
@@ -56,6 +57,8 @@ public:
     ScatteringLookup scatteringLookup(FrameContext& frame, const AtmosphereSettings& settings);
     // Bruneton's tables for another technique; not ready() when that model's tables do not exist.
     BrunetonLookup brunetonLookup(FrameContext& frame, const AtmosphereSettings& settings);
+    // Hillaire's tables for another technique; not ready() when that model's tables do not exist.
+    HillaireLookup hillaireLookup(FrameContext& frame, const AtmosphereSettings& settings);
 
     // For each model the settings draw: how long its tables take to compute, and to load from a
     // cache written into `scratch` (the benchmark). Does not touch the tables in use.

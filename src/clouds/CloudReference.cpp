@@ -14,8 +14,10 @@ const ShaderKey kListShader{"clouds/reference_index.hlsl", "list_particles", "cs
 const ShaderKey kMajorantShader{"clouds/reference_index.hlsl", "cell_majorants", "cs_5_0", {}};
 const ShaderKey kCompositeVertexShader{"clouds/reference_composite.hlsl", "vs_main", "vs_5_0", {}};
 const ShaderKey kCompositePixelShader{"clouds/reference_composite.hlsl", "ps_main", "ps_5_0", {}};
-ShaderKey traceKey(bool bruneton) { return {"clouds/trace_clouds.hlsl", "main", "cs_5_0", {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1"}}; }
+ShaderKey traceKey(int atmosphere) { return {"clouds/trace_clouds.hlsl", "main", "cs_5_0", {cloudAtmosphereDefine(atmosphere)}}; }
 }  // namespace
+
+std::string cloudAtmosphereDefine(int atmosphere) { return "CLOUD_ATMOSPHERE=" + std::to_string(atmosphere); }
 
 CloudReference::CloudReference(ID3D11Device* device) : constants_(device), premultiplied_(states::premultipliedAlpha(device)) {}
 
@@ -63,7 +65,7 @@ void CloudReference::bindMedium(ID3D11DeviceContext* context, CloudParticles& pa
     context->CSSetConstantBuffers(3, 1, constants_.address());
 }
 
-void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings, std::uint64_t key, bool bruneton,
+void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings, std::uint64_t key, int atmosphere,
                            glm::uvec4 modes) {
     ID3D11DeviceContext* context = frame.context;
     const int width = frame.width(), height = frame.height();
@@ -96,7 +98,7 @@ void CloudReference::trace(FrameContext& frame, CloudParticles& particles, const
         bindMedium(context, particles);
         ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
         context->CSSetShaderResources(3, 1, &depth);
-        context->CSSetShader(frame.shaders.computeShader(traceKey(bruneton)), nullptr, 0);
+        context->CSSetShader(frame.shaders.computeShader(traceKey(atmosphere)), nullptr, 0);
         context->CSSetUnorderedAccessViews(0, 1, accumulation_.uav.GetAddressOf(), nullptr);
         // A thread per pixel of this phase: the blocks along each side that reach past it.
         const unsigned across = (static_cast<unsigned>(width) - phase % stride + stride - 1) / stride;

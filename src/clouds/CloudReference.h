@@ -17,8 +17,13 @@
 #include <d3d11.h>
 
 #include <cstdint>
+#include <string>
 
 namespace firmament {
+
+// The define that picks the atmosphere model the clouds' shaders read (clouds/cloud_atmosphere.hlsli):
+// CLOUD_ATMOSPHERE=1 Yusov 2013, 2 Bruneton and Neyret 2008, 3 Hillaire 2020.
+std::string cloudAtmosphereDefine(int atmosphere);
 
 class CloudParticles;
 struct FrameContext;
@@ -45,8 +50,9 @@ public:
     // settings.referenceStride^2 block in turn (starting over when `key`, a digest of everything
     // the picture depends on, or either setting changed), then blends their mean over
     // the frame's HDR target. The caller binds the atmosphere's constants at b2 and b4, its
-    // tables at t5..t9 and its sampler at s1 (compute stage); `bruneton` picks the shader.
-    void trace(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings, std::uint64_t key, bool bruneton, glm::uvec4 modes);
+    // tables at t5..t9 and its sampler at s1 (compute stage); `atmosphere` (CLOUD_ATMOSPHERE) picks
+    // the shader.
+    void trace(FrameContext& frame, CloudParticles& particles, const CloudSettings& settings, std::uint64_t key, int atmosphere, glm::uvec4 modes);
     // Paths in the accumulation after the last trace() at the pixels with the fewest.
     unsigned pathsPerPixel() const;
     // Passes since the accumulation started over, and the pixel stride they ran at.

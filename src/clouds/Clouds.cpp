@@ -17,22 +17,37 @@ namespace firmament {
 namespace {
 const ShaderKey kOpticalDepthVertexShader{"clouds/optical_depth_view.hlsl", "vs_main", "vs_5_0", {}};
 const ShaderKey kOpticalDepthPixelShader{"clouds/optical_depth_view.hlsl", "ps_main", "ps_5_0", {}};
-// The shading's shaders through Yusov's tables (CLOUD_ATMOSPHERE=1) or Bruneton's (2); the pixel
-// shader's for each blending path (CLOUD_BLENDING=0 alpha, 1 per-pixel lists, 2 ordered views).
-ShaderKey shadeVertexKey(bool bruneton) {
-    return {"clouds/shade_particles.hlsl", "vs_main", "vs_5_0", {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1"}};
-}
-ShaderKey shadePixelKey(bool bruneton, ParticleBlending blending) {
+// The shading's shaders through the tables of the model `atmosphere` (CLOUD_ATMOSPHERE: 1 Yusov
+// 2013, 2 Bruneton 2008, 3 Hillaire 2020); the pixel shader's for each blending path
+// (CLOUD_BLENDING=0 alpha, 1 per-pixel lists, 2 ordered views).
+ShaderKey shadeVertexKey(int atmosphere) { return {"clouds/shade_particles.hlsl", "vs_main", "vs_5_0", {cloudAtmosphereDefine(atmosphere)}}; }
+ShaderKey shadePixelKey(int atmosphere, ParticleBlending blending) {
     const char* path = blending == ParticleBlending::PerPixelLists ? "CLOUD_BLENDING=1" : blending == ParticleBlending::RasterizerOrdered ? "CLOUD_BLENDING=2" : "CLOUD_BLENDING=0";
-    return {"clouds/shade_particles.hlsl", "ps_main", "ps_5_0", {bruneton ? "CLOUD_ATMOSPHERE=2" : "CLOUD_ATMOSPHERE=1", path}};
+    return {"clouds/shade_particles.hlsl", "ps_main", "ps_5_0", {cloudAtmosphereDefine(atmosphere), path}};
 }
-}  // namespace
 
-namespace {
-// The atmosphere model's tables in the order clouds/cloud_atmosphere.hlsli reads them (t5..t9).
-std::array<ID3D11ShaderResourceView*, 5> atmosphereViews(const ScatteringLookup* y, const BrunetonLookup* b, bool bruneton) {
-    if (bruneton) return {b->transmittance, b->irradiance, b->inscatter, nullptr, nullptr};
-    return {y->netDensity, y->singleScattering, y->highOrderScattering, y->multipleScattering, y->ambientLight};
+// The tables the clouds are lit through, where clouds/cloud_atmosphere.hlsli reads them.
+struct AtmosphereBinding {
+    int model = 0;                                           // CLOUD_ATMOSPHERE; 0: no model's tables are ready
+    ID3D11Buffer* atmosphere = nullptr;                      // b2: AtmosphereConstants
+    ID3D11Buffer* modelConstants = nullptr;                  // b4: Bruneton's or Hillaire's constants
+    std::array<ID3D11ShaderResourceView*, 5> tables{};       // t5..t9
+    ID3D11SamplerState* linearClamp = nullptr;
+    glm::uvec4 modes{0u};                                    // Yusov's render modes: single, multiple, integration steps
+};
+
+AtmosphereBinding bindingOf(const Clouds::AtmosphereTables& a) {
+    AtmosphereBinding b;
+    if (const ScatteringLookup* y = a.yusov; y && y->ready) {
+        b = {1, y->atmosphere, nullptr, {y->netDensity, y->singleScattering, y->highOrderScattering, y->multipleScattering, y->ambientLight},
+             y->linearClamp,
+             glm::uvec4(static_cast<unsigned>(y->singleMode), static_cast<unsigned>(y->multipleMode), static_cast<unsigned>(y->integrationSteps), 0u)};
+    } else if (const BrunetonLookup* br = a.bruneton; br && br->ready) {
+        b = {2, br->atmosphere, br->bruneton, {br->transmittance, br->irradiance, br->inscatter, nullptr, nullptr}, br->linearClamp, glm::uvec4(0u)};
+    } else if (const HillaireLookup* h = a.hillaire; h && h->ready) {
+        b = {3, h->atmosphere, h->hillaire, {h->transmittance, h->multipleScattering, h->irradiance, nullptr, nullptr}, h->linearClamp, glm::uvec4(0u)};
+    }
+    return b;
 }
 }  // namespace
 
@@ -168,7 +183,7 @@ void Clouds::renderGeometry(FrameContext& frame, const CloudSettings& settings) 
 void Clouds::renderTranslucent(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere) {
     const ParticleTablePrecomputation* tables = tables_.current();
     if (!tables) return;
-    const bool lit = (atmosphere.yusov && atmosphere.yusov->ready) || (atmosphere.bruneton && atmosphere.bruneton->ready);
+    const bool lit = bindingOf(atmosphere).model != 0;
     referenceDrawn_ = false;
     if (settings.showParticles == ParticleView::OpticalDepth) drawOpticalDepth(frame, tables->tables());
     else if (settings.showParticles == ParticleView::Off && settings.enabled && lit && settings.renderer == CloudRenderer::PathTracedReference)
@@ -208,11 +223,9 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     const int downscale = settings.downscale;
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
-    const bool bruneton = !(atmosphere.yusov && atmosphere.yusov->ready);
+    const AtmosphereBinding air = bindingOf(atmosphere);
     gpu::CloudShadingConstants c{};
-    if (!bruneton)
-        c.modes = glm::uvec4(static_cast<unsigned>(atmosphere.yusov->singleMode), static_cast<unsigned>(atmosphere.yusov->multipleMode),
-                             static_cast<unsigned>(atmosphere.yusov->integrationSteps), 0u);
+    c.modes = air.modes;
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
                              static_cast<float>(scatteringParameters_.viewZeniths), static_cast<float>(scatteringParameters_.opticalRadii));
     c.light = glm::vec4(static_cast<float>(scatteringParameters_.firstOpticalRadius), static_cast<float>(settings.multipleScattering), 0.0f, 0.0f);
@@ -243,19 +256,16 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         blending_.bindForParticles(context, target, blend);
         context->OMSetDepthStencilState(nullptr, 0);
         context->RSSetState(noCulling_.Get());
-        const ScatteringLookup* y = atmosphere.yusov;
-        const BrunetonLookup* b = atmosphere.bruneton;
-        ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere, shadingConstants_.get(), bruneton ? b->bruneton : nullptr};
+        ID3D11Buffer* buffers[] = {air.atmosphere, shadingConstants_.get(), air.modelConstants};
         context->PSSetConstantBuffers(2, 3, buffers);
         ID3D11ShaderResourceView* extra[3] = {tables.opticalDepth.srv.Get(), depth, scattering.srv.Get()};
         context->PSSetShaderResources(2, 3, extra);
-        const std::array<ID3D11ShaderResourceView*, 5> air = atmosphereViews(y, b, bruneton);
-        context->PSSetShaderResources(5, 5, air.data());
+        context->PSSetShaderResources(5, 5, air.tables.data());
         ID3D11ShaderResourceView* sunColumn = opacity_.sunColumn();
         context->PSSetShaderResources(10, 1, &sunColumn);
-        ID3D11SamplerState* samplers[] = {linearWrap_.Get(), bruneton ? b->linearClamp : y->linearClamp};
+        ID3D11SamplerState* samplers[] = {linearWrap_.Get(), air.linearClamp};
         context->PSSetSamplers(0, 2, samplers);
-        particles_.drawInstanced(frame, shadeVertexKey(bruneton), shadePixelKey(bruneton, blending), ParticleSet::InView, width, height);
+        particles_.drawInstanced(frame, shadeVertexKey(air.model), shadePixelKey(air.model, blending), ParticleSet::InView, width, height);
         ID3D11ShaderResourceView* none[9] = {};
         context->PSSetShaderResources(2, 9, none);
     } while (blending_.firstBuildOverflowed(frame.device, context));
@@ -283,28 +293,23 @@ std::uint64_t digest(std::uint64_t hash, const void* data, size_t size) {
 
 void Clouds::drawReference(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere) {
     ID3D11DeviceContext* context = frame.context;
-    const bool bruneton = !(atmosphere.yusov && atmosphere.yusov->ready);
-    const ScatteringLookup* y = atmosphere.yusov;
-    const BrunetonLookup* b = atmosphere.bruneton;
-    glm::uvec4 modes(0u);
-    if (!bruneton)
-        modes = glm::uvec4(static_cast<unsigned>(y->singleMode), static_cast<unsigned>(y->multipleMode), static_cast<unsigned>(y->integrationSteps), 0u);
+    const AtmosphereBinding air = bindingOf(atmosphere);
+    const glm::uvec4 modes = air.modes;
     // Everything the picture depends on but the clock, which the reference holds still.
     gpu::FrameConstants view = frame.constants;
     view.time = glm::vec4(0.0f);
     std::uint64_t key = digest(0xcbf29ce484222325ull, &view, sizeof view);
     key = digest(key, &particles_.constants(), sizeof(gpu::CloudFieldConstants));
-    const unsigned choices[] = {static_cast<unsigned>(settings.particleDensity), bruneton ? 2u : 1u, modes.x, modes.y, modes.z};
+    const unsigned choices[] = {static_cast<unsigned>(settings.particleDensity), static_cast<unsigned>(air.model), modes.x, modes.y, modes.z};
     key = digest(key, choices, sizeof choices);
-    ID3D11Buffer* buffers[] = {bruneton ? b->atmosphere : y->atmosphere};
+    ID3D11Buffer* buffers[] = {air.atmosphere};
     context->CSSetConstantBuffers(2, 1, buffers);
-    ID3D11Buffer* brunetonBuffer = bruneton ? b->bruneton : nullptr;
-    context->CSSetConstantBuffers(4, 1, &brunetonBuffer);
-    const std::array<ID3D11ShaderResourceView*, 5> air = atmosphereViews(y, b, bruneton);
-    context->CSSetShaderResources(5, 5, air.data());
-    ID3D11SamplerState* clamp = bruneton ? b->linearClamp : y->linearClamp;
+    ID3D11Buffer* modelBuffer = air.modelConstants;
+    context->CSSetConstantBuffers(4, 1, &modelBuffer);
+    context->CSSetShaderResources(5, 5, air.tables.data());
+    ID3D11SamplerState* clamp = air.linearClamp;
     context->CSSetSamplers(1, 1, &clamp);
-    reference_.trace(frame, particles_, settings, key, bruneton, modes);
+    reference_.trace(frame, particles_, settings, key, air.model, modes);
     referenceDrawn_ = true;
 }
 

@@ -11,6 +11,7 @@
 #include "clouds/ParticleTables.h"
 #include "clouds/VolumeBlendingPass.h"
 #include "frame/BrunetonLookup.h"
+#include "frame/HillaireLookup.h"
 #include "frame/ScatteringLookup.h"
 #include "tables/CachedTables.h"
 #include "tables/TableTiming.h"
@@ -37,11 +38,12 @@ public:
     CloudShadowInputs shadows() const { return shadowMap_.inputs(); }
     const CloudShadowMap& shadowMap() const { return shadowMap_; }
     CloudShadowMap& shadowMap() { return shadowMap_; }
-    // The atmosphere model the clouds are lit through: Yusov 2013's tables or Bruneton's (one of
-    // them, the model drawn alone; none in a comparison of the two).
+    // The atmosphere model the clouds are lit through: Yusov 2013's tables, Bruneton's or
+    // Hillaire's (one of them, the model drawn alone; none in a comparison).
     struct AtmosphereTables {
         const ScatteringLookup* yusov = nullptr;
         const BrunetonLookup* bruneton = nullptr;
+        const HillaireLookup* hillaire = nullptr;
     };
     // After the sky and the aerial perspective: the shaded clouds through `atmosphere`, or the
     // translucent view of the particles, over the lit scene. The particle scattering table is

@@ -108,10 +108,13 @@ void Renderer::render(const State& state, FrameTime time, bool finishWorkNow, ID
     {
         const AtmosphereSettings& a = state.atmosphere;
         const bool alone = a.comparison == ModelComparison::None && scattering && state.clouds.enabled;
-        const bool yusov = alone && a.model == AtmosphereModel::Yusov2013, bruneton = alone && a.model == AtmosphereModel::Bruneton2008;
+        const bool yusov = alone && a.model == AtmosphereModel::Yusov2013, bruneton = alone && a.model == AtmosphereModel::Bruneton2008,
+                   hillaire = alone && a.model == AtmosphereModel::Hillaire2020;
         const ScatteringLookup yusovTables = yusov ? atmosphere_->scatteringLookup(frame, a) : ScatteringLookup{};
         const BrunetonLookup brunetonTables = bruneton ? atmosphere_->brunetonLookup(frame, a) : BrunetonLookup{};
-        clouds_->renderTranslucent(frame, state.clouds, {yusov ? &yusovTables : nullptr, bruneton ? &brunetonTables : nullptr});
+        const HillaireLookup hillaireTables = hillaire ? atmosphere_->hillaireLookup(frame, a) : HillaireLookup{};
+        clouds_->renderTranslucent(frame, state.clouds,
+                                   {yusov ? &yusovTables : nullptr, bruneton ? &brunetonTables : nullptr, hillaire ? &hillaireTables : nullptr});
     }
     // 11. Luminance, exposure, adaptation and tone mapping to the output.
     toneMapping_->render(frame, state.toneMapping, output);

@@ -98,9 +98,9 @@ double redOverBlueAbove(const std::vector<float>& rgb) {
     return red / std::max(blue, 1e-9);
 }
 
-// Through either atmosphere model's tables.
+// Through each atmosphere model's tables.
 TEST(CloudCapture, ShadedCloudsHideTheBlueSkyAndGlowRedAtSunset) {
-    for (const wchar_t* model : {L"atmosphere.model=Yusov 2013", L"atmosphere.model=Bruneton 2008"}) {
+    for (const wchar_t* model : {L"atmosphere.model=Yusov 2013", L"atmosphere.model=Bruneton 2008", L"atmosphere.model=Hillaire 2020"}) {
         const std::string name(model + std::wcslen(L"atmosphere.model="), model + std::wcslen(model));
         const std::vector<std::wstring> below{model, L"camera.position=0,1500,0", L"camera.pitch=25", L"clouds.cloudiness=1"};
         const std::string tag = name.substr(0, 4);

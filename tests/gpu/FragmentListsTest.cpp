@@ -247,7 +247,7 @@ TEST_F(FragmentListsTest, ManyFragmentsPerPixelInOneDrawMergeInPrimitiveOrder) {
 // The pixel shaders of every blending path are built (the ordered one with its rasterizer-ordered
 // views, which no device here runs in order) and the device creates them.
 TEST_F(FragmentListsTest, EveryPathsShadersAreBuiltAndCreated) {
-    for (const char* model : {"CLOUD_ATMOSPHERE=1", "CLOUD_ATMOSPHERE=2"})
+    for (const char* model : {"CLOUD_ATMOSPHERE=1", "CLOUD_ATMOSPHERE=2", "CLOUD_ATMOSPHERE=3"})
         for (const char* path : {"CLOUD_BLENDING=0", "CLOUD_BLENDING=1", "CLOUD_BLENDING=2"})
             EXPECT_NE(productShaderLibrary->pixelShader({"clouds/shade_particles.hlsl", "ps_main", "ps_5_0", {model, path}}), nullptr) << model << " " << path;
     for (const char* resolve : {"clouds/resolve_fragments.hlsl", "clouds/resolve_ordered.hlsl"})

@@ -13,12 +13,12 @@ struct HillaireCamera {
     bool inSpace;     // above the top of the atmosphere
 };
 
-// rho^2 from the camera's coordinates (the ground plane y = 0 over the centre), so that the
-// metres of a camera near the ground survive single precision.
-HillaireCamera hillaireCamera(FrameConstants f, AtmosphereConstants a) {
+// A view's start at the world position c (the ground plane y = 0 over the Earth's centre). rho^2
+// comes from c's coordinates, so that the metres of a point near the ground survive single
+// precision.
+HillaireCamera hillaireCameraAt(AtmosphereConstants a, float3 c) {
     HillaireCamera cam;
     float rg = a.earth.x;
-    float3 c = f.cameraPosition.xyz;
     cam.position = c + float3(0.0, rg, 0.0);
     cam.rho2 = max(dot(c.xz, c.xz) + c.y * (2.0 * rg + c.y), 0.0);
     cam.r = rg + cam.rho2 / (sqrt(rg * rg + cam.rho2) + rg);
@@ -26,6 +26,8 @@ HillaireCamera hillaireCamera(FrameConstants f, AtmosphereConstants a) {
     cam.inSpace = cam.r > a.earth.z;
     return cam;
 }
+
+HillaireCamera hillaireCamera(FrameConstants f, AtmosphereConstants a) { return hillaireCameraAt(a, f.cameraPosition.xyz); }
 
 // The same camera held at the top of the atmosphere when it is above it: where the tables that
 // follow the camera are made (from space they are not read; render.hlsl marches each pixel).

@@ -21,8 +21,6 @@ void clouds(PanelContext& panel) {
     if (c.renderer == CloudRenderer::PathTracedReference) editSettings(panel, "clouds", {"referencePaths", "referenceStride"});
     const AtmosphereSettings& a = panel.model.state.atmosphere;
     if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
-    else if (c.enabled && a.model == AtmosphereModel::Hillaire2020)
-        ImGui::TextDisabled("The clouds are not shaded through Hillaire 2020 yet: choose Yusov 2013 or Bruneton 2008 to draw them");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
     ImGui::SeparatorText("Rendering");
     editSettings(panel, "clouds", {"volumetricBlending", "blendingPath", "downscale", "lightOcclusion", "multipleScattering", "lightSpaceResolution",
