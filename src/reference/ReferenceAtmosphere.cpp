@@ -149,24 +149,98 @@ glm::dvec3 ReferenceAtmosphere::weightedScattering(glm::dvec3 start, glm::dvec3 
     return total;
 }
 
-double ReferenceAtmosphere::sampleByDensity(glm::dvec3 start, glm::dvec3 dir, double length, double u1, double u2, double& pdf) const {
-    constexpr int kBins = 256;
-    const double width = length / kBins;
-    std::array<double, kBins> cumulative{};
+namespace {
+constexpr int kPathBins = 256;
+}  // namespace
+
+double ReferenceAtmosphere::sampleBins(const std::vector<double>& weights, double length, double u1, double u2, double& pdf) {
+    const double width = length / static_cast<double>(weights.size());
+    std::vector<double> cumulative(weights.size());
     double total = 0.0;
-    for (int i = 0; i < kBins; ++i) {
-        const glm::dvec3 rho = density(glm::length(start + dir * ((i + 0.5) * width)) - p_.earthRadius);
-        total += rho.x + rho.y;
-        cumulative[static_cast<size_t>(i)] = total;
-    }
+    for (size_t i = 0; i < weights.size(); ++i) cumulative[i] = total += weights[i];
     const auto bin = std::min<size_t>(static_cast<size_t>(std::lower_bound(cumulative.begin(), cumulative.end(), u1 * total) - cumulative.begin()),
-                                      kBins - 1);
-    const double weight = cumulative[bin] - (bin > 0 ? cumulative[bin - 1] : 0.0);
-    pdf = weight / total / width;
+                                      weights.size() - 1);
+    pdf = weights[bin] / total / width;
     return (static_cast<double>(bin) + u2) * width;
 }
 
-glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder,
+double ReferenceAtmosphere::sampleByDensity(glm::dvec3 start, glm::dvec3 dir, double length, double u1, double u2, double& pdf) const {
+    const double width = length / kPathBins;
+    std::vector<double> weights(kPathBins);
+    for (int i = 0; i < kPathBins; ++i) {
+        const glm::dvec3 rho = density(glm::length(start + dir * ((i + 0.5) * width)) - p_.earthRadius);
+        weights[static_cast<size_t>(i)] = rho.x + rho.y;
+    }
+    return sampleBins(weights, length, u1, u2, pdf);
+}
+
+double ReferenceAtmosphere::sampleTowardSunlight(glm::dvec3 start, glm::dvec3 dir, double length, glm::dvec3 sunDir, double u1, double u2,
+                                                 double& pdf) const {
+    const double width = length / kPathBins;
+    std::vector<double> scatterers(kPathBins), lit(kPathBins);
+    double allScatterers = 0.0, litScatterers = 0.0;
+    for (int i = 0; i < kPathBins; ++i) {
+        const glm::dvec3 middle = start + dir * ((i + 0.5) * width);
+        const glm::dvec3 rho = density(glm::length(middle) - p_.earthRadius);
+        scatterers[static_cast<size_t>(i)] = rho.x + rho.y;
+        // Lit if any of it is: a line crosses the shadow's boundary at most twice, so a bin
+        // whose ends and middle are all in the shadow is almost surely wholly in it. (A bin taken
+        // as dark while part of it is lit keeps only the first density there: samples in that
+        // part are rare and weigh hugely, and the estimate's variance is then unbounded.)
+        const bool sunlit = !inEarthShadow(start + dir * (i * width), sunDir) || !inEarthShadow(middle, sunDir) ||
+                            !inEarthShadow(start + dir * ((i + 1) * width), sunDir);
+        lit[static_cast<size_t>(i)] = sunlit ? rho.x + rho.y : 0.0;
+        allScatterers += scatterers[static_cast<size_t>(i)];
+        litScatterers += lit[static_cast<size_t>(i)];
+    }
+    // Even shares of the density of scatterers, of the density where the sun is seen (when any
+    // is), and of uniform distances: along a view in the Earth's shadow the light that reaches the
+    // sunlit air comes from its thin upper part, which the density alone seldom draws.
+    const double shares = litScatterers > 0.0 ? 3.0 : 2.0;
+    std::vector<double> mixture(kPathBins);
+    for (size_t i = 0; i < mixture.size(); ++i)
+        mixture[i] = (scatterers[i] / allScatterers + (litScatterers > 0.0 ? lit[i] / litScatterers : 0.0) + 1.0 / kPathBins) / shares;
+    return sampleBins(mixture, length, u1, u2, pdf);
+}
+
+namespace {
+// A direction uniform over the sphere from two uniform numbers.
+glm::dvec3 uniformDirection(double u1, double u2) {
+    const double z = 1.0 - 2.0 * u1, phi = 2.0 * kPi * u2;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return {r * std::cos(phi), z, r * std::sin(phi)};
+}
+
+constexpr double kSunwardCone = 20.0 * kPi / 180.0;  // half-angle of the cone about the horizon towards the sun
+}  // namespace
+
+// An even mixture of directions uniform over the sphere and uniform in a cone of kSunwardCone
+// about the horizon towards the sun: in twilight the air the sun still lights lies that way, low
+// over the horizon, hundreds of kilometres off. pdf is the mixture's.
+glm::dvec3 ReferenceAtmosphere::directionTowardSunlight(glm::dvec3 position, glm::dvec3 sunDir, std::mt19937_64& random, double& pdf) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const glm::dvec3 up = glm::normalize(position);
+    const glm::dvec3 across = sunDir - glm::dot(sunDir, up) * up;
+    const double coneSolidAngle = 2.0 * kPi * (1.0 - std::cos(kSunwardCone));
+    if (glm::dot(across, across) < 1e-12) {  // the sun at the zenith or the nadir: no horizon towards it
+        pdf = 1.0 / (4.0 * kPi);
+        return uniformDirection(unit(random), unit(random));
+    }
+    const glm::dvec3 axis = glm::normalize(across);
+    glm::dvec3 w;
+    if (unit(random) < 0.5) {
+        w = uniformDirection(unit(random), unit(random));
+    } else {
+        const double cosTheta = 1.0 - unit(random) * (1.0 - std::cos(kSunwardCone)), phi = 2.0 * kPi * unit(random);
+        const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+        const glm::dvec3 side = glm::cross(axis, up);
+        w = axis * cosTheta + (up * std::cos(phi) + side * std::sin(phi)) * sinTheta;
+    }
+    pdf = 0.5 / (4.0 * kPi) + (glm::dot(w, axis) >= std::cos(kSunwardCone) ? 0.5 / coneSolidAngle : 0.0);
+    return w;
+}
+
+glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder, PathSampling sampling,
                                           std::mt19937_64& random) const {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const auto scattering = [&](glm::dvec3 rho, double cosTheta) {
@@ -176,18 +250,21 @@ glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm:
     for (int order = 1; order <= maxOrder; ++order) {
         const double length = rayLength(x, d);
         if (length <= 0.0) break;
-        // The distance, in proportion to the density of scatterers along the segment.
+        // The distance, in proportion to the density of scatterers along the segment (or the mixture).
         double pdf = 0.0;
-        const double s = sampleByDensity(x, d, length, unit(random), unit(random), pdf);
+        const double u1 = unit(random), u2 = unit(random);
+        const double s = sampling == PathSampling::TowardSunlight ? sampleTowardSunlight(x, d, length, sunDir, u1, u2, pdf)
+                                                                  : sampleByDensity(x, d, length, u1, u2, pdf);
         const glm::dvec3 p = x + d * s;
         const glm::dvec3 rho = density(glm::length(p) - p_.earthRadius);
         const glm::dvec3 reach = throughput / pdf * glm::exp(-opticalDepth(netDensity(x, p)));
         if (order >= minOrder) contribution += reach * scattering(rho, glm::dot(d, sunDir)) * sunTransmittance(p, sunDir);
-        // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi).
-        const double z = 1.0 - 2.0 * unit(random), phi = 2.0 * kPi * unit(random);
-        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-        const glm::dvec3 w(r * std::cos(phi), z, r * std::sin(phi));
-        throughput = reach * scattering(rho, glm::dot(d, w)) * (4.0 * kPi);
+        // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi), or from the
+        // mixture that also aims at the sunlit air (directionTowardSunlight).
+        double directionPdf = 1.0 / (4.0 * kPi);
+        const glm::dvec3 w = sampling == PathSampling::TowardSunlight ? directionTowardSunlight(p, sunDir, random, directionPdf)
+                                                                      : uniformDirection(unit(random), unit(random));
+        throughput = reach * scattering(rho, glm::dot(d, w)) / directionPdf;
         x = p;
         d = w;
     }
@@ -203,16 +280,16 @@ ReferenceAtmosphere::Estimate estimate(glm::dvec3 sum, glm::dvec3 sumOfSquares, 
 }  // namespace
 
 ReferenceAtmosphere::Estimate ReferenceAtmosphere::highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir,
-                                                                     int maxOrder, int paths, unsigned seed) const {
-    return scatteringOrders(start, viewDir, sunDir, 2, maxOrder, paths, seed);
+                                                                     int maxOrder, int paths, unsigned seed, PathSampling sampling) const {
+    return scatteringOrders(start, viewDir, sunDir, 2, maxOrder, paths, seed, sampling);
 }
 
 ReferenceAtmosphere::Estimate ReferenceAtmosphere::scatteringOrders(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int minOrder,
-                                                                  int maxOrder, int paths, unsigned seed) const {
+                                                                  int maxOrder, int paths, unsigned seed, PathSampling sampling) const {
     std::mt19937_64 random(seed);
     glm::dvec3 sum(0.0), sumOfSquares(0.0);
     for (int path = 0; path < paths; ++path) {
-        const glm::dvec3 contribution = tracePath(start, viewDir, sunDir, minOrder, maxOrder, random);
+        const glm::dvec3 contribution = tracePath(start, viewDir, sunDir, minOrder, maxOrder, sampling, random);
         sum += contribution;
         sumOfSquares += contribution * contribution;
     }
@@ -233,7 +310,7 @@ ReferenceAtmosphere::Estimate ReferenceAtmosphere::skyIrradiance(glm::dvec3 posi
         const double u = unit(random), phi = 2.0 * kPi * unit(random);
         const double sine = std::sqrt(u);
         const glm::dvec3 w = tangent * (sine * std::cos(phi)) + bitangent * (sine * std::sin(phi)) + up * std::sqrt(std::max(0.0, 1.0 - u));
-        const glm::dvec3 contribution = kPi * tracePath(position, w, sunDir, 1, maxOrder, random);
+        const glm::dvec3 contribution = kPi * tracePath(position, w, sunDir, 1, maxOrder, PathSampling::ByDensity, random);
         sum += contribution;
         sumOfSquares += contribution * contribution;
     }

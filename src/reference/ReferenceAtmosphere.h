@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <random>
+#include <vector>
 
 namespace firmament::atmosphere {
 
@@ -61,11 +62,19 @@ public:
     struct Estimate {
         glm::dvec3 mean, standardError;
     };
-    Estimate highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int maxOrder, int paths,
-                                 unsigned seed) const;
+    // Where a path's distances are drawn. ByDensity: in proportion to the density of scatterers.
+    // TowardSunlight: from an even mixture of that and the density where the sun is seen (the
+    // bins of sampleByDensity whose middle is out of the Earth's shadow). In deep twilight the air
+    // the sun still lights is high and thin, hundreds of kilometres away, and paths drawn by
+    // density alone almost never scatter there: the estimate is nearly always zero and its error
+    // bar meaningless. Both are unbiased (the mixture's density is never zero where the
+    // scatterers' is not).
+    enum class PathSampling { ByDensity, TowardSunlight };
+    Estimate highOrderScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int maxOrder, int paths, unsigned seed,
+                                 PathSampling sampling = PathSampling::ByDensity) const;
     // The same paths' light of orders minOrder..maxOrder only (1: single scattering too).
-    Estimate scatteringOrders(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int minOrder, int maxOrder, int paths,
-                              unsigned seed) const;
+    Estimate scatteringOrders(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, int minOrder, int maxOrder, int paths, unsigned seed,
+                              PathSampling sampling = PathSampling::ByDensity) const;
     // The sky's irradiance on a horizontal surface at `position`, orders 1..maxOrder (the
     // ground black), by the same paths started in directions drawn by their cosine with the up
     // vector: Yusov 2013's ambient light (eq. 3) and Bruneton's E.
@@ -77,6 +86,9 @@ public:
     // a few kilometres of it: drawn uniformly, as at first, the estimate is heavy-tailed and
     // its error bar unreliable.
     double sampleByDensity(glm::dvec3 start, glm::dvec3 dir, double length, double u1, double u2, double& pdf) const;
+    // The same from PathSampling::TowardSunlight's mixture: both densities are constant over the
+    // same bins, and so is their mean, from which the bin is drawn.
+    double sampleTowardSunlight(glm::dvec3 start, glm::dvec3 dir, double length, glm::dvec3 sunDir, double u1, double u2, double& pdf) const;
 
     // A start point and two directions with the given table coordinates (in the x-y plane,
     // the sun towards +z when it is off that plane).
@@ -93,7 +105,12 @@ private:
     glm::dvec3 weightedScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround, double rayleighWeight,
                                   double mieWeight) const;
     // One path from `start` along `dir`: the light of orders minOrder..maxOrder it gathers.
-    glm::dvec3 tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder, std::mt19937_64& random) const;
+    glm::dvec3 tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder, PathSampling sampling,
+                         std::mt19937_64& random) const;
+    // PathSampling::TowardSunlight's next direction from `position`, and its pdf.
+    static glm::dvec3 directionTowardSunlight(glm::dvec3 position, glm::dvec3 sunDir, std::mt19937_64& random, double& pdf);
+    // A distance drawn from piecewise constant weights over kPathBins equal bins of [0, length].
+    static double sampleBins(const std::vector<double>& weights, double length, double u1, double u2, double& pdf);
 
     AtmosphereParameters p_;
 };

@@ -55,7 +55,7 @@ TEST(TableCache, ComputesCachesExportsRecoversAndLoads) {
     EXPECT_EQ(density.image.width, 128);
     EXPECT_GT(density.image.rgba[0], 0.0f);
     const ExrFile scattering = readExr(exported / "single-scattering.exr");
-    EXPECT_EQ(scattering.image.width, 8 * 16);  // altitude x sun zenith tiles
+    EXPECT_EQ(scattering.image.width, 2 * 8 * 16);  // (Rayleigh and Mie banks of altitude) x sun zenith tiles
     EXPECT_EQ(scattering.image.height, 32 * 8);  // view zenith x sun-view tiles
     for (const char* name : {"firmament.lut.name", "firmament.lut.dimensions", "firmament.lut.layout", "firmament.lut.parameterization",
                              "firmament.lut.key", "firmament.atmosphere.rayleighScattering", "firmament.atmosphere.earthRadius"})

@@ -6,7 +6,9 @@
 // pixels, "sunMarginDegrees" left out about the sun; each point's "sunIntensity", the captures'
 // sun irradiance, is divided out. Inside the atmosphere only views of the sky are scored (those
 // that meet the black ground say little of a sky model). The reference (support/SkyScore.h) is
-// computed once per pixel for all the models, on every hardware thread. SCORES gets, per point,
+// computed once per pixel for all the models, on every hardware thread, its paths drawn toward the
+// sunlit air (ReferenceAtmosphere::PathSampling::TowardSunlight), and with kZenithTwilightPaths
+// times the paths at the zenith when the sun is below the horizon. SCORES gets, per point,
 // the reference's luminance noise and each model's HDR PSNR, median and 95th-percentile relative
 // error of the luminance, and zenith luminance beside the reference's.
 #include "atmosphere/AtmosphereParameters.h"
@@ -31,6 +33,8 @@ namespace {
 
 using namespace firmament;
 using Estimate = atmosphere::ReferenceAtmosphere::Estimate;
+
+constexpr int kZenithTwilightPaths = 32;
 
 struct Point {
     std::string name;
@@ -97,8 +101,13 @@ int main(int argc, char** argv) {
                 const atmosphere::ReferenceAtmosphere reference(AtmosphereParameters::from(settings));
                 const glm::dvec3 start(0.0, reference.parameters().earthRadius + point.altitude, 0.0);
                 const ExrFile& capture = point.wide.begin()->second;
-                point.reference[jobs[j].ray] = test::referenceRadiance(reference, start, point.rays[jobs[j].ray].direction, test::directionToSun(capture),
-                                                                       paths, 1000u + static_cast<unsigned>(j));
+                // The zenith's light in twilight comes from air the sun lights hundreds of
+                // kilometres off: kZenithTwilightPaths times the paths there.
+                const bool twilightZenith = jobs[j].ray + 1 == point.rays.size() && point.sunElevation < 0.0;
+                point.reference[jobs[j].ray] =
+                    test::referenceRadiance(reference, start, point.rays[jobs[j].ray].direction, test::directionToSun(capture),
+                                            twilightZenith ? paths * kZenithTwilightPaths : paths, 1000u + static_cast<unsigned>(j),
+                                            atmosphere::ReferenceAtmosphere::PathSampling::TowardSunlight);
                 if (++done % 200 == 0) std::fprintf(stderr, "reference: %zu of %zu pixels\n", done.load(), jobs.size());
             }
         };

@@ -30,7 +30,8 @@ std::vector<PixelRay> sampledRays(const ExrFile& capture, int columns, int rows,
 glm::dvec3 directionToSun(const ExrFile& capture) { return glm::dvec3(std::get<glm::vec3>(capture.attributes.at("firmament.directionToSun"))); }
 
 atmosphere::ReferenceAtmosphere::Estimate referenceRadiance(const atmosphere::ReferenceAtmosphere& reference, glm::dvec3 start, glm::dvec3 view,
-                                                            glm::dvec3 sun, int paths, unsigned seed) {
+                                                            glm::dvec3 sun, int paths, unsigned seed,
+                                                            atmosphere::ReferenceAtmosphere::PathSampling sampling) {
     // From above the atmosphere the view starts where it enters it; one that misses it is dark.
     const double top = reference.parameters().topRadius();
     if (glm::length(start) > top) {
@@ -39,7 +40,7 @@ atmosphere::ReferenceAtmosphere::Estimate referenceRadiance(const atmosphere::Re
         start += view * (-b - std::sqrt(discriminant));
         start *= (top - 1e-3) / glm::length(start);  // just inside
     }
-    auto higher = reference.highOrderScattering(start, view, sun, kScoreOrders, paths, seed);
+    auto higher = reference.highOrderScattering(start, view, sun, kScoreOrders, paths, seed, sampling);
     higher.mean += reference.singleScattering(start, view, sun);
     return higher;
 }

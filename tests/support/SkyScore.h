@@ -32,9 +32,10 @@ std::vector<PixelRay> sampledRays(const ExrFile& capture, int columns, int rows,
 glm::dvec3 directionToSun(const ExrFile& capture);
 
 // The light of every order along a view from `start`, per unit sun irradiance, and its standard
-// error (the path-traced orders' only).
-atmosphere::ReferenceAtmosphere::Estimate referenceRadiance(const atmosphere::ReferenceAtmosphere& reference, glm::dvec3 start, glm::dvec3 view,
-                                                            glm::dvec3 sun, int paths, unsigned seed);
+// error (the path-traced orders' only), the paths drawn as `sampling` says.
+atmosphere::ReferenceAtmosphere::Estimate referenceRadiance(
+    const atmosphere::ReferenceAtmosphere& reference, glm::dvec3 start, glm::dvec3 view, glm::dvec3 sun, int paths, unsigned seed,
+    atmosphere::ReferenceAtmosphere::PathSampling sampling = atmosphere::ReferenceAtmosphere::PathSampling::ByDensity);
 
 double luminance(glm::dvec3 rgb);  // Rec. 709 Y
 

@@ -27,23 +27,45 @@ float3 transmittanceAlong(AtmosphereConstants a, BrunetonConstants b, Texture2D<
     return min(ratio, 1.0);
 }
 
+// Both tables end the sun's axis at mu_s = -0.2, 11.5 degrees below the horizon; a lower sun
+// would read the light of that one, a glow that never fades (docs/atmosphere.md, "Twilight").
+// Below it the light goes on falling as it falls over the axis's last texel, by the same factor
+// per texel's width of mu_s: L = L_0 (L_0 / L_1)^steps, per channel, never rising.
+static const float kLowestSun = -kIrradianceMuSOffset;
+float4 fadeBelowTable(float4 atEnd, float4 nextUp, float steps) {
+    return steps > 0.0 ? atEnd * pow(saturate(atEnd / max(nextUp, 1e-30)), steps) : atEnd;
+}
+
 // Irradiance on a horizontal surface at radius r, per unit sun irradiance.
 float3 irradianceAt(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4> lut, SamplerState linearClamp, float r, float muS) {
-    return lut.SampleLevel(linearClamp, irradianceUv(a, b, r, muS), 0).rgb;
+    float3 light = lut.SampleLevel(linearClamp, irradianceUv(a, b, r, muS), 0).rgb;
+    float spacing = (1.0 - kLowestSun) / (b.irradianceSize.x - 1.0);
+    float3 nextUp = lut.SampleLevel(linearClamp, irradianceUv(a, b, r, kLowestSun + spacing), 0).rgb;
+    return fadeBelowTable(float4(light, 0.0), float4(nextUp, 0.0), max(kLowestSun - muS, 0.0) / spacing).rgb;
 }
 
 // The 4D table at (altitude h, mu, mu_s, nu), in the half of the view zenith axis `groundHalf` says:
-// trilinear in the 3D texture, linear between the two nu slices by hand.
-float4 sampleInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float h, float mu,
-                       float muS, float nu, bool groundHalf) {
+// trilinear in the 3D texture, linear between the two nu slices by hand; faded below the lowest sun.
+float4 sampleInscatterAt(BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float4 u) {
     float4 n = b.inscatterSize;
-    float4 u = inscatterUnit(a, b, h, mu, muS, nu, groundHalf);
     float slice = u.w * (n.w - 1.0);
     float slice0 = clamp(floor(slice), 0.0, n.w - 2.0);
     float weight = saturate(slice - slice0);
     float x = (slice0 + texelCentre(u.z, n.z)) / n.w;
     float3 uvw = float3(x, u.y, texelCentre(u.x, n.x));
     return lerp(lut.SampleLevel(linearClamp, uvw, 0), lut.SampleLevel(linearClamp, uvw + float3(1.0 / n.w, 0.0, 0.0), 0), weight);
+}
+
+float4 sampleInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float h, float mu,
+                       float muS, float nu, bool groundHalf) {
+    float4 u = inscatterUnit(a, b, h, mu, muS, nu, groundHalf);
+    float4 light = sampleInscatterAt(b, lut, linearClamp, u);
+    if (muS >= kLowestSun) return light;
+    // mu_s of the axis's second texel, from u_mu_s = (1 - e^(-3 mu_s - 0.6)) / (1 - e^(-3.6)).
+    float second = 1.0 / (b.inscatterSize.z - 1.0);
+    float spacing = (-log(1.0 - second * (1.0 - exp(-kMuSExponent - kMuSOffset))) - kMuSOffset) / kMuSExponent - kLowestSun;
+    float4 nextUp = sampleInscatterAt(b, lut, linearClamp, float4(u.x, u.y, second, u.w));
+    return fadeBelowTable(light, nextUp, (kLowestSun - muS) / spacing);
 }
 
 // Single Mie scattering's colour from its red channel (Bruneton and Neyret 2008, "getMie"): the table keeps

@@ -29,6 +29,15 @@ static const int kHorizonUndecided = -1;
 static const int kBelowHorizon = 0;
 static const int kAboveHorizon = 1;
 
+// The 4D tables hold their light times kTableScale (the pre-computation writes it so, every
+// look-up divides it out; YusovPrecomputation.h's kYusovTableScale is the same number). They are
+// half floats, whose normal range ends at 6e-5 and whose subnormals step by 6e-8: unscaled, the
+// light of a sun 8 degrees down (about 1e-6 of its irradiance at the zenith) kept 6% steps, and at
+// 11 degrees down (4e-8) less than one step, so the sky of deep twilight was rounding noise. Times
+// 1e4, 1e-6 is a normal number and 1e-10 keeps a few bits; the largest light, under 2 (the
+// Rayleigh bank of the all-orders table: S_R + L^H / P_R), stays far below half's 65504.
+static const float kTableScale = 1e4;
+
 // Light scattered by each species, without its phase function: S_R and S_M.
 struct SpeciesScattering {
     float3 rayleigh;
@@ -46,6 +55,8 @@ float3 withPhases(AtmosphereConstants a, SpeciesScattering s, float cosTheta) {
 struct TableSample {
     float3 uvw0, uvw1;
     float weight;
+    float stepsBelow;  // how far the sun is below the table's lowest sun, in sun-zenith texels there (0 above)
+    float nextSun;     // z from a sun-zenith texel to the next one up
 };
 
 TableSample tableSample(AtmosphereConstants a, float3 position, float3 viewDir, float3 sunDir, inout int horizonSide) {
@@ -69,16 +80,34 @@ TableSample tableSample(AtmosphereConstants a, float3 position, float3 viewDir, 
     t.weight = saturate(slice - slice0);
     t.uvw0.z = (slice0 + sunZenith) / n.w;
     t.uvw1 = float3(t.uvw0.xy, t.uvw0.z + 1.0 / n.w);
+    float texelSpacing = unitToSunZenith(1.0 / (n.z - 1.0)) - kSunZenithMinCos;
+    t.stepsBelow = max(kSunZenithMinCos - cosSun, 0.0) / texelSpacing;
+    t.nextSun = 1.0 / (n.z * n.w);
     return t;
 }
 
-// Trilinear in the 3D texture, linear between the two sun-view slices; `bank` of `banks` side by
-// side along u.
-float3 sampleTable(Texture3D<float4> lut, SamplerState linearClamp, TableSample t, float bank, float banks) {
-    float3 shift = float3(bank, 0.0, 0.0);
+// Trilinear in the 3D texture, linear between the two sun-view slices, the sun `sunShift` in z
+// from the sample's; `bank` of `banks` side by side along u.
+float3 sampleTableAt(Texture3D<float4> lut, SamplerState linearClamp, TableSample t, float sunShift, float bank, float banks) {
+    float3 shift = float3(bank, 0.0, sunShift);
     float3 scale = float3(1.0 / banks, 1.0, 1.0);
     return lerp(lut.SampleLevel(linearClamp, (t.uvw0 + shift) * scale, 0).rgb, lut.SampleLevel(linearClamp, (t.uvw1 + shift) * scale, 0).rgb,
-                t.weight);
+                t.weight) /
+           kTableScale;
+}
+
+// The table's light at the sample. Eq. 6 ends the sun's axis at 11.4 degrees below the horizon;
+// a lower sun would read the light of that one, a glow that never fades (docs/atmosphere.md,
+// "Twilight"). Below it the light goes on falling as it falls over the axis's last texel, by the
+// same factor per texel's width of the sun's cosine: L = L_0 (L_0 / L_1)^steps, per channel, never
+// rising.
+float3 sampleTable(Texture3D<float4> lut, SamplerState linearClamp, TableSample t, float bank, float banks) {
+    float3 light = sampleTableAt(lut, linearClamp, t, 0.0, bank, banks);
+    if (t.stepsBelow > 0.0) {
+        float3 above = sampleTableAt(lut, linearClamp, t, t.nextSun, bank, banks);
+        light *= pow(saturate(light / max(above, 1e-30)), t.stepsBelow);
+    }
+    return light;
 }
 
 // The in-scattered radiance, per unit sun irradiance, of a table that stores it as it is: the

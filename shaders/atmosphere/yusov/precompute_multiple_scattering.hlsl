@@ -6,7 +6,8 @@
 //       (eq. 2, trapezoidal), and the high-order sum L^H += L^(n);
 // then combine: L^M = L^(1) + L^H. Every table is 4D packed into 3D, one thread per texel, in
 // slabs of z (PrecomputeSliceConstants); the single and all-orders tables hold a bank of texels
-// per species (lookup.hlsli).
+// per species (lookup.hlsli). Every table, J's too, holds its light times kTableScale: the texels
+// read with Load stay in those units, those read by look-up come out of them.
 #include "atmosphere/yusov/lookup.hlsli"
 #include "atmosphere/yusov/single_scattering.hlsli"
 
@@ -53,7 +54,7 @@ void gatherScattered(uint3 id, bool fromSingle) {
                                      : lookUpScattering(atmosphere, previousOrder, linearClamp, ray.start, w, ray.sunDir, side);
         sum += scatteringCoefficient(atmosphere, density, dot(ray.viewDir, w)) * incoming;
     }
-    scattered[texelOf(id)] = float4(sum * (4.0 * kPi / count), 0.0);
+    scattered[texelOf(id)] = float4(sum * (4.0 * kPi / count) * kTableScale, 0.0);
 }
 
 [numthreads(4, 8, 4)]
@@ -91,8 +92,8 @@ void scatteringOrder(uint3 id : SV_DispatchThreadID) {
         integrand = nextIntegrand;
     }
     uint3 texel = texelOf(id);
-    order[texel] = float4(radiance, 0.0);
-    highOrder[texel] = float4(highOrderSoFar.Load(int4(texel, 0)).rgb + radiance, 0.0);
+    order[texel] = float4(radiance * kTableScale, 0.0);
+    highOrder[texel] = float4(highOrderSoFar.Load(int4(texel, 0)).rgb + radiance * kTableScale, 0.0);
 }
 
 // ---- L^M = L^(1) + L^H ----

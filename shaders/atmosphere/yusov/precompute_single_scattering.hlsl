@@ -2,7 +2,7 @@
 // (Yusov 2013, "Computing single scattering"). One thread per texel: its world parameters
 // from the inverse parameterization, then the integral along the view ray to the top of the
 // atmosphere or the ground, S_R into the table's first bank of altitude texels and S_M into its
-// second, without their phases (lookup.hlsli, lookUpSpeciesScattering). Run in slabs of z
+// second, without their phases (lookup.hlsli, lookUpSpeciesScattering), times kTableScale. Run in slabs of z
 // (PrecomputeSliceConstants) so that no dispatch holds the device for long.
 #include "atmosphere/yusov/single_scattering.hlsli"
 
@@ -28,6 +28,6 @@ void main(uint3 id : SV_DispatchThreadID) {
     float rayLength = rayLengthInAtmosphere(atmosphere, ray.start, ray.viewDir, ray.belowHorizon);
     SpeciesScattering s = integrateSpeciesScattering(atmosphere, netDensityLut, linearClamp, ray.start, ray.viewDir, ray.sunDir, rayLength,
                                                      kIntegrationSteps);
-    singleScattering[texel] = float4(s.rayleigh, 0.0);
-    singleScattering[texel + uint3((uint)n.x, 0, 0)] = float4(s.mie, 0.0);
+    singleScattering[texel] = float4(s.rayleigh * kTableScale, 0.0);
+    singleScattering[texel + uint3((uint)n.x, 0, 0)] = float4(s.mie * kTableScale, 0.0);
 }

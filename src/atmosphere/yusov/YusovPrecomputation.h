@@ -21,10 +21,14 @@
 
 namespace firmament {
 
+// The 4D tables hold their light times this (half floats would round the light of deep twilight
+// away; shaders/atmosphere/yusov/lookup.hlsli's kTableScale, the same number, says more).
+constexpr double kYusovTableScale = 1e4;
+
 // The tables, as the renderer reads them.
 struct YusovTables {
     Texture2D netDensity;           // R32G32B32A32_FLOAT: (zenith cosine, altitude) -> Rayleigh, Mie, ozone net density
-    Texture3D singleScattering;     // R16G16B16A16_FLOAT: L^(1) per unit sun irradiance, packed 4D, by species: S_R in
+    Texture3D singleScattering;     // R16G16B16A16_FLOAT: L^(1) per unit sun irradiance times kYusovTableScale, packed 4D, by species: S_R in
                                     //   altitude texels [0, N), S_M in [N, 2N), without their phases
     Texture3D highOrderScattering;  //   L^H = L^(2) + ... + L^(N), radiance
     Texture3D multipleScattering;   //   L^M = L^(1) + L^H by species: S_R + L^H / P_R, then S_M

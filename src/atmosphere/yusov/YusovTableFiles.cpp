@@ -11,7 +11,7 @@ namespace firmament {
 
 namespace {
 
-constexpr int kFormatVersion = 3;  // raise when the files' layout changes
+constexpr int kFormatVersion = 4;  // raise when the files' layout changes
 
 std::string dimensions(const LutDimensions& n) {
     char text[128];
@@ -119,6 +119,7 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Yusov
         a["firmament.lut.name"] = std::string(table.name);
         a["firmament.lut.dimensions"] = dimensions(n);
         a["firmament.lut.layout"] = tiledLayout(n, table.banks);
+        a["firmament.lut.scale"] = std::string("the texels hold the light times " + std::to_string(kYusovTableScale));
         writeExr(folder / (prefix + table.file), tileVolume(readTexture3D(device, context, table.texture->texture.Get()), n, table.banks), a);
     }
 
