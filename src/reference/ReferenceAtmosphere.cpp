@@ -222,16 +222,17 @@ glm::dvec3 ReferenceAtmosphere::directionTowardSunlight(glm::dvec3 position, glm
     const glm::dvec3 up = glm::normalize(position);
     const glm::dvec3 across = sunDir - glm::dot(sunDir, up) * up;
     const double coneSolidAngle = 2.0 * kPi * (1.0 - std::cos(kSunwardCone));
+    const double choice = unit(random), u1 = unit(random), u2 = unit(random);  // in this order
     if (glm::dot(across, across) < 1e-12) {  // the sun at the zenith or the nadir: no horizon towards it
         pdf = 1.0 / (4.0 * kPi);
-        return uniformDirection(unit(random), unit(random));
+        return uniformDirection(u1, u2);
     }
     const glm::dvec3 axis = glm::normalize(across);
     glm::dvec3 w;
-    if (unit(random) < 0.5) {
-        w = uniformDirection(unit(random), unit(random));
+    if (choice < 0.5) {
+        w = uniformDirection(u1, u2);
     } else {
-        const double cosTheta = 1.0 - unit(random) * (1.0 - std::cos(kSunwardCone)), phi = 2.0 * kPi * unit(random);
+        const double cosTheta = 1.0 - u1 * (1.0 - std::cos(kSunwardCone)), phi = 2.0 * kPi * u2;
         const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
         const glm::dvec3 side = glm::cross(axis, up);
         w = axis * cosTheta + (up * std::cos(phi) + side * std::sin(phi)) * sinTheta;
@@ -252,7 +253,10 @@ glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm:
         if (length <= 0.0) break;
         // The distance, in proportion to the density of scatterers along the segment (or the mixture).
         double pdf = 0.0;
-        const double u1 = unit(random), u2 = unit(random);
+        // Drawn second, then first: the order in which the first version's call, which passed
+        // both draws as arguments, drew them under GCC (right to left), so that the Monte Carlo
+        // tests' measured numbers stand.
+        const double u2 = unit(random), u1 = unit(random);
         const double s = sampling == PathSampling::TowardSunlight ? sampleTowardSunlight(x, d, length, sunDir, u1, u2, pdf)
                                                                   : sampleByDensity(x, d, length, u1, u2, pdf);
         const glm::dvec3 p = x + d * s;
@@ -262,8 +266,14 @@ glm::dvec3 ReferenceAtmosphere::tracePath(glm::dvec3 start, glm::dvec3 dir, glm:
         // The next segment looks along w, uniform over the sphere (pdf 1 / 4 pi), or from the
         // mixture that also aims at the sunlit air (directionTowardSunlight).
         double directionPdf = 1.0 / (4.0 * kPi);
-        const glm::dvec3 w = sampling == PathSampling::TowardSunlight ? directionTowardSunlight(p, sunDir, random, directionPdf)
-                                                                      : uniformDirection(unit(random), unit(random));
+        glm::dvec3 w;
+        if (sampling == PathSampling::TowardSunlight) {
+            w = directionTowardSunlight(p, sunDir, random, directionPdf);
+        } else {
+            const double z = unit(random);  // drawn in this order (a call may evaluate its arguments in any)
+            const double phi = unit(random);
+            w = uniformDirection(z, phi);
+        }
         throughput = reach * scattering(rho, glm::dot(d, w)) / directionPdf;
         x = p;
         d = w;
