@@ -232,10 +232,10 @@ TEST(ReferenceAtmosphere, PathsTowardSunlightAgreeWithPathsByDensityByDay) {
 // In deep twilight the paths drawn toward the sunlit air converge where those drawn by density
 // do not: the zenith from the ground with the sun 12 and 18 degrees down, orders 2 to 16. By
 // density, 16,000 paths give a few or none that reach the sunlit air (relative standard errors of
-// the luminance of 0.74 and 1, and a mean 30 times too low at -12 degrees); toward sunlight, the
-// same number give an estimate within kTwilightError (measured 13% and 27%), at least three times
-// tighter, which 4,000 other paths confirm within 4 combined standard errors. The error is still heavy-tailed at -18 degrees: paths that reach the sunlit air
-// differ by orders of magnitude in the transmittance of their way there.
+// the luminance of 0.96 and 1); toward sunlight, the same number give an estimate within
+// kTwilightError (measured 14% and 29%), at least three times tighter, which 4,000 other paths
+// confirm within 4 combined standard errors. The error is still heavy-tailed at -18 degrees: paths
+// that reach the sunlit air differ by orders of magnitude in the transmittance of their way there.
 TEST(ReferenceAtmosphere, PathsTowardSunlightConvergeInDeepTwilight) {
     constexpr double kTwilightError = 0.4;
     const AtmosphereParameters p;
