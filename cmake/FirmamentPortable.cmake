@@ -124,10 +124,12 @@ add_custom_command(TARGET firmament_portable_tests POST_BUILD
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/soak $<TARGET_FILE_DIR:firmament_portable_tests>/media/soak
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/media/benchmarks $<TARGET_FILE_DIR:firmament_portable_tests>/media/benchmarks)
 # Two processes (GoogleTest's shards) rather than one per case, as the Windows build's unit tests,
-# with the same two slow cases in the full tier (tests/CMakeLists.txt).
+# with the same two slow cases in the full tier (tests/CMakeLists.txt), and the reference's
+# convergence in deep twilight (20 s here, 65 s under Wine, whose run is full tier too).
 include(${CMAKE_CURRENT_LIST_DIR}/FirmamentTestGroups.cmake)
 firmament_test_groups(firmament_portable_tests SHARDS 2 TIMEOUT 600
-    FULL_TIER CloudScatteringFile ParticleScattering.TheOrdersMatchAMonteCarloRandomWalkThroughTheSameSphere)
+    FULL_TIER CloudScatteringFile ParticleScattering.TheOrdersMatchAMonteCarloRandomWalkThroughTheSameSphere
+    ReferenceAtmosphere.PathsTowardSunlightConvergeInDeepTwilight)
 
 # The rooms of src/ (cmake/FirmamentLayers.cmake): the tree's includes all run down them, and
 # the check fails on an include up or across them. Checked here, natively, and by every build.
