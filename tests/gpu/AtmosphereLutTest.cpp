@@ -268,7 +268,7 @@ TEST_F(AtmosphereTables, HighOrderAndMultipleTablesAtRandomPointsMatchTheReferen
 // below 11.4 degrees the light of that one: a glow that never faded (docs/atmosphere.md,
 // "Twilight"); the test failed so.
 TEST_F(AtmosphereTables, TwilightFadesBelowTheTablesLowestSun) {
-    const auto tables = precompute(LutResolution::Medium, 4);
+    const auto tables = precompute(LutResolution::Small, 4);
     const AtmosphereParameters& p = tables->parameters();
     std::vector<Query> queries;
     for (int degrees = -8; degrees >= -20; --degrees) {
