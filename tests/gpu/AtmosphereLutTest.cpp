@@ -261,7 +261,7 @@ TEST_F(AtmosphereTables, HighOrderAndMultipleTablesAtRandomPointsMatchTheReferen
 }
 
 // Twilight below the tables' lowest sun (eq. 6 ends the axis at 11.4 degrees down): the zenith's
-// light from the ground, read from the all-orders table (Medium, orders 1 to 4) with the sun from 8
+// light from the ground, read from the all-orders table (Small, orders 1 to 4) with the sun from 8
 // to 20 degrees down, falls at every degree, by a factor of 1.5 or more past the axis's end
 // (measured 2.1 a degree), so that the light at 18 degrees down is under 2% of that at 12
 // (measured 1.2%; the path-traced reference's, 0.6%). Read as they were, the tables gave every sun
