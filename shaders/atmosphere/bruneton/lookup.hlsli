@@ -39,9 +39,10 @@ float4 fadeBelowTable(float4 atEnd, float4 nextUp, float steps) {
 // Irradiance on a horizontal surface at radius r, per unit sun irradiance.
 float3 irradianceAt(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4> lut, SamplerState linearClamp, float r, float muS) {
     float3 light = lut.SampleLevel(linearClamp, irradianceUv(a, b, r, muS), 0).rgb;
+    if (muS >= kLowestSun) return light;
     float spacing = (1.0 - kLowestSun) / (b.irradianceSize.x - 1.0);
     float3 nextUp = lut.SampleLevel(linearClamp, irradianceUv(a, b, r, kLowestSun + spacing), 0).rgb;
-    return fadeBelowTable(float4(light, 0.0), float4(nextUp, 0.0), max(kLowestSun - muS, 0.0) / spacing).rgb;
+    return fadeBelowTable(float4(light, 0.0), float4(nextUp, 0.0), (kLowestSun - muS) / spacing).rgb;
 }
 
 // The 4D table at (altitude h, mu, mu_s, nu), in the half of the view zenith axis `groundHalf` says:
