@@ -1,8 +1,12 @@
 #pragma once
 // A soak run's samples and what they say: whether a quantity grew after the warm-up by more
-// than the schedule's bound. The baseline is the sample at the end of the last warm-up loop;
-// the growth is the largest later sample less the baseline (a leak shows as a peak that keeps
-// rising; a quantity that goes up and comes back down again is not growth).
+// than the schedule's bound. The baseline is the sample at the end of the last warm-up loop.
+// Counts that are exact (live objects, handles) grow by their largest later sample less the
+// baseline: any object or handle more is a leak. Private memory wanders from loop to loop (the
+// heaps, the driver's caches, the peak of whichever table the schedule is making again), so its
+// growth is its trend: the rise of the least-squares line through the baseline and every later
+// sample, over the frames they span. A leak is a rising floor, which the line follows; a wander
+// that goes up and comes back down is not growth, however high its peak (the peak is reported).
 #include "app/SoakSchedule.h"
 
 #include <nlohmann/json.hpp>
@@ -25,7 +29,9 @@ struct SoakSample {
 struct SoakGrowth {
     std::string quantity;  // "live D3D11 objects", "handles", "private MiB"
     double baseline = 0.0, peak = 0.0, bound = 0.0;
-    double growth() const { return peak - baseline; }
+    bool byTrend = false;   // private memory: judged by its fitted rise, not its peak
+    double fittedRise = 0.0;
+    double growth() const { return byTrend ? fittedRise : peak - baseline; }
     bool exceeded() const { return growth() > bound; }
 };
 

@@ -184,13 +184,38 @@ TEST(SoakVerdict, GrowthAfterTheWarmUpBeyondItsBoundFailsNamingTheQuantity) {
     EXPECT_FALSE(judgeSoak(handles, s).passed());
     EXPECT_TRUE(judgeSoak(handles, s).growth[1].exceeded());
 
-    // Private memory: 8 MiB is allowed, 8.5 is not.
+    // Private memory is judged by its trend, the rise of the least-squares line through the
+    // baseline (sample 1, frame 200) and every later sample, over frames 200 to 600. A steady
+    // creep of 2 MiB a loop rises 8 MiB: allowed; 2.125 a loop rises 8.5: not.
+    const auto mib = [](double value) { return static_cast<std::uint64_t>(value * 1024.0 * 1024.0); };
     std::vector<SoakSample> memory = flat(6, 400, 50, 200.0);
-    memory[5].privateBytes = static_cast<std::uint64_t>(208.0 * 1024 * 1024);
-    EXPECT_TRUE(judgeSoak(memory, s).passed());
-    memory[5].privateBytes = static_cast<std::uint64_t>(208.5 * 1024 * 1024);
+    for (size_t i = 1; i < memory.size(); ++i) memory[i].privateBytes = mib(200.0 + 2.0 * static_cast<double>(i - 1));
+    EXPECT_TRUE(judgeSoak(memory, s).passed()) << judgeSoak(memory, s).summary();
+    EXPECT_NEAR(judgeSoak(memory, s).growth[2].growth(), 8.0, 1e-6);
+    for (size_t i = 1; i < memory.size(); ++i) memory[i].privateBytes = mib(200.0 + 2.125 * static_cast<double>(i - 1));
     EXPECT_FALSE(judgeSoak(memory, s).passed());
-    EXPECT_NEAR(judgeSoak(memory, s).growth[2].growth(), 8.5, 1e-9);
+    EXPECT_NEAR(judgeSoak(memory, s).growth[2].growth(), 8.5, 1e-6);
+    EXPECT_NE(judgeSoak(memory, s).summary().find("private MiB: 200.0 after the warm-up, at most 208.5 later (fitted rise 8.5, bound 8.0): GREW"),
+              std::string::npos)
+        << judgeSoak(memory, s).summary();
+
+    // A wander up and down with a peak far above the bound, and no trend, is not growth (the
+    // 10,000-frame soak's memory moved so, by 90 MiB, with its floor flat); the same peak on a
+    // rising floor is.
+    std::vector<SoakSample> wander = flat(6, 400, 50, 200.0);
+    wander[2].privateBytes = mib(230.0);
+    wander[3].privateBytes = mib(190.0);
+    wander[4].privateBytes = mib(230.0);
+    wander[5].privateBytes = mib(190.0);
+    EXPECT_TRUE(judgeSoak(wander, s).passed()) << judgeSoak(wander, s).summary();
+    EXPECT_DOUBLE_EQ(judgeSoak(wander, s).growth[2].peak, 230.0);
+    for (size_t i = 3; i < wander.size(); ++i) wander[i].privateBytes += mib(6.0 * static_cast<double>(i - 2));
+    EXPECT_FALSE(judgeSoak(wander, s).passed()) << judgeSoak(wander, s).summary();
+
+    // With one sample after the warm-up (the full tier's 1,000 frames), the line is the difference.
+    std::vector<SoakSample> shortRun = flat(3, 400, 50, 200.0);
+    shortRun[2].privateBytes = mib(208.5);
+    EXPECT_NEAR(judgeSoak(shortRun, s).growth[2].growth(), 8.5, 1e-6);
 }
 
 TEST(SoakVerdict, ARunTooShortToJudgeSaysSoAndFails) {
