@@ -50,13 +50,14 @@ struct AtmosphereSettings {
     LutResolution resolution = LutResolution::Full;
     // Hillaire 2020's own controls, the paper's defaults: the tables made each frame (the sky
     // view's texels and steps, the froxels along each axis of the aerial perspective and the
-    // steps per slice), and the multiple-scattering table's directions and steps.
+    // steps per slice), and the multiple-scattering table's directions, steps and texels.
     int hillaireSkyViewWidth = 192, hillaireSkyViewHeight = 108;
     int hillaireSkyViewSteps = 30;     // also the steps of a view marched per pixel (from space, beyond the froxels)
     int hillaireFroxels = 32;
     int hillaireFroxelSteps = 2;       // per slice
     int hillaireMultipleScatteringDirections = 64;
     int hillaireMultipleScatteringSteps = 20;
+    int hillaireMultipleScatteringDetail = 1;  // the multiple-scattering table's texels along each axis, times the resolution's (1: the paper's 32 x 32 at Full)
 
     void visit(SettingsVisitor& v) {
         v.field("enabled", enabled, "Enable light scattering");
@@ -86,6 +87,7 @@ struct AtmosphereSettings {
         v.field("hillaireMultipleScatteringDirections", hillaireMultipleScatteringDirections, {16, 1024},
                 "Multiple scattering directions (Hillaire)");
         v.field("hillaireMultipleScatteringSteps", hillaireMultipleScatteringSteps, {4, 100}, "Multiple scattering steps (Hillaire)");
+        v.field("hillaireMultipleScatteringDetail", hillaireMultipleScatteringDetail, {1, 8}, "Multiple scattering texels, x (Hillaire)");
     }
 };
 

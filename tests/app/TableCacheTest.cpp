@@ -137,7 +137,7 @@ TEST(TableCache, EveryModelCachesAndExportsItsTables) {
     EXPECT_EQ(inscatter.image.height, 32 * 8);  // mu x radius layers
     EXPECT_EQ(std::get<std::string>(inscatter.attributes.at("firmament.lut.dimensions")), "8 x 32 x 8 x 4 (r, mu, mu_s, nu)");
     for (const char* name : {"firmament.lut.name", "firmament.lut.layout", "firmament.lut.parameterization", "firmament.lut.key",
-                             "firmament.atmosphere.groundAlbedo", "firmament.atmosphere.mieScattering"})
+                             "firmament.atmosphere.groundAlbedo", "firmament.atmosphere.mieScattering", "firmament.lut.scale"})
         EXPECT_TRUE(inscatter.attributes.count(name)) << name;
     const FloatExrFile transmittance = readFloatExr(exported / "bruneton-transmittance.exr");
     EXPECT_EQ(transmittance.image.width, 64);

@@ -248,6 +248,34 @@ inline void expectFiniteAndNotNegative(const std::vector<glm::vec4>& got, const 
         for (int ch = 0; ch < 3; ++ch) ASSERT_TRUE(std::isfinite(got[i][ch]) && got[i][ch] >= 0.0f) << entry << " query " << i;
 }
 
+// Twilight below the tables' lowest sun: the zenith seen from 2 m with the sun 8 to 20 degrees
+// down, a degree apart.
+inline std::vector<Query> twilightZenithQueries(const AtmosphereParameters& p) {
+    std::vector<Query> queries;
+    for (int degrees = -8; degrees >= -20; --degrees) {
+        const double e = degrees * 3.14159265358979323846 / 180.0;
+        queries.push_back({glm::vec4(0.0f, static_cast<float>(p.earthRadius + 2.0), 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f),
+                           glm::vec4(static_cast<float>(std::cos(e)), static_cast<float>(std::sin(e)), 0.0f, 0.0f)});
+    }
+    return queries;
+}
+
+// The zenith's light at twilightZenithQueries falls at every degree, by a factor of 1.5 or more
+// from 12 degrees down, so that at 18 degrees down it is under 2% of that at 12.
+inline void expectTwilightFalls(const std::vector<glm::vec4>& got) {
+    const auto luminance = [](glm::vec4 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    for (size_t i = 0; i + 1 < got.size(); ++i) {
+        const int degrees = -8 - static_cast<int>(i);
+        std::printf("sun %d degrees: zenith %.3e\n", degrees, luminance(got[i]));
+        EXPECT_TRUE(std::isfinite(luminance(got[i])) && luminance(got[i]) >= 0.0) << degrees;
+        EXPECT_LT(luminance(got[i + 1]), luminance(got[i])) << "from " << degrees << " to " << degrees - 1 << " degrees";
+        if (degrees <= -12) {
+            EXPECT_LT(luminance(got[i + 1]) * 1.5, luminance(got[i])) << "from " << degrees << " to " << degrees - 1 << " degrees";
+        }
+    }
+    EXPECT_LT(luminance(got[10]), 0.02 * luminance(got[4]));  // -18 against -12 degrees
+}
+
 // The largest channel error relative to the brightest channel of `expected`, or to `floor`
 // where that is darker.
 inline double errorRelativeToBrightest(glm::dvec3 got, glm::dvec3 expected, double floor) {

@@ -45,8 +45,8 @@ CameraSegment brunetonSegment(float3 origin, float3 v, float3 s, float distance,
     float3 x0 = x + v * t;
     float r0 = length(x0);
     float h0 = max((rho2 + t * (t + 2.0 * r * mu)) / (r0 + rg), 0.0);
-    float4 fromCamera = sampleInscatter(atmosphere, bruneton, inscatterLut, linearClamp, h, mu, muS, nu, toGround);
-    float4 fromEnd = sampleInscatter(atmosphere, bruneton, inscatterLut, linearClamp, h0, dot(x0, v) / r0, dot(x0, s) / r0, nu, toGround);
+    float4 fromCamera = lookUpInscatter(atmosphere, bruneton, inscatterLut, linearClamp, h, mu, muS, nu, toGround);
+    float4 fromEnd = lookUpInscatter(atmosphere, bruneton, inscatterLut, linearClamp, h0, dot(x0, v) / r0, dot(x0, s) / r0, nu, toGround);
     float4 inscatter = max(fromCamera - segment.transmittance.rgbr * fromEnd, 0.0);
     segment.light = max(inscatter.rgb * rayleighPhase(nu) + mieFromRed(atmosphere, inscatter) * miePhase(nu, atmosphere.mieScattering.w), 0.0);
     return segment;

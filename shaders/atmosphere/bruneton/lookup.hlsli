@@ -69,6 +69,24 @@ float4 sampleInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<flo
     return fadeBelowTable(light, nextUp, (kLowestSun - muS) / spacing);
 }
 
+// The in-scatter table S holds its light times kInscatterScale: the pre-computation writes it
+// so (precompute_inscatter.hlsl's initial and accumulate), lookUpInscatter divides it out, and
+// BrunetonPrecomputation.h's kBrunetonInscatterScale is the same number. The table is half floats,
+// whose normal range ends at 6.1e-5 and whose subnormals step by 6e-8: unscaled, twilight's sky
+// (S about 2e-5 per unit sun irradiance at the zenith with the sun 8 degrees down, 1e-6 at 12)
+// kept a few bits or none. Times 1e3 it is normal. Yusov's tables use 1e4; this one stops at 1e3
+// because its largest light is larger: 6.5 per unit irradiance with the settings' haziest air
+// (aerosol density 5, no absorption), a white ground and 10 orders (the higher orders over P_R
+// near nu = 0), which 1e4 would put within 1% of half's largest number, 65504.
+// The delta tables are float32 and unscaled: sampleInscatter reads those as they are.
+static const float kInscatterScale = 1e3;
+
+// S from the in-scatter table itself (sampleInscatter, the scale divided out).
+float4 lookUpInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float h, float mu,
+                       float muS, float nu, bool groundHalf) {
+    return sampleInscatter(a, b, lut, linearClamp, h, mu, muS, nu, groundHalf) / kInscatterScale;
+}
+
 // Single Mie scattering's colour from its red channel (Bruneton and Neyret 2008, "getMie"): the table keeps
 // Rayleigh's RGB and Mie's red only; Mie's other channels follow from the ratio of the two
 // species, which single scattering makes close to beta_M / beta_R per channel.

@@ -11,6 +11,7 @@
 //            previous order (the sun's own for order 2);
 //   order:   delta S(x, v) = integral of T(x -> y) delta J(y, v) dt     (order n);
 //   accumulate: S.rgb += delta S / P_R(nu), so that render time's S.rgb P_R(nu) gives it back.
+// S itself holds its light times kInscatterScale (lookup.hlsli says why); the deltas are float32, unscaled.
 // The sphere integrals use the same equal-area directions as Yusov's model (sphereDirections).
 #include "atmosphere/bruneton/precompute_common.hlsli"
 
@@ -91,7 +92,7 @@ void initial(uint3 id : SV_DispatchThreadID) {
     uint3 texel;
     InscatterSample s;
     if (!inscatterThread(id, texel, s)) return;
-    inscatterOut[texel] = float4(deltaRayleigh[texel].rgb, deltaMie[texel].r);
+    inscatterOut[texel] = float4(deltaRayleigh[texel].rgb, deltaMie[texel].r) * kInscatterScale;
 }
 
 // ---- scatteredRadiance ----
@@ -171,5 +172,5 @@ void accumulate(uint3 id : SV_DispatchThreadID) {
     uint3 texel;
     InscatterSample s;
     if (!inscatterThread(id, texel, s)) return;
-    inscatterOut[texel] = inscatterSoFar[texel] + float4(deltaScattering[texel].rgb / rayleighPhase(s.nu), 0.0);
+    inscatterOut[texel] = inscatterSoFar[texel] + float4(deltaScattering[texel].rgb * (kInscatterScale / rayleighPhase(s.nu)), 0.0);
 }

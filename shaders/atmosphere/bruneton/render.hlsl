@@ -87,7 +87,7 @@ float3 modelRadiance(int2 pixel, float2 uv, float depth) {
     bool otherGeometry = geometry && !modelGround;
     float t = otherGeometry ? min(geometryDistance, end) : end;
 
-    float4 fromCamera = sampleInscatter(atmosphere, bruneton, inscatterTable, linearClamp, h, mu, muS, nu, toGround);
+    float4 fromCamera = lookUpInscatter(atmosphere, bruneton, inscatterTable, linearClamp, h, mu, muS, nu, toGround);
     float4 inscatter = fromCamera;
     float3 transmittance = 1.0;
     float3 radiance = 0.0;
@@ -97,7 +97,7 @@ float3 modelRadiance(int2 pixel, float2 uv, float depth) {
         float r0 = length(x0);
         float mu0 = dot(x0, v) / r0, muS0 = dot(x0, s) / r0;
         float h0 = modelGround ? 0.0 : max((rho2 + t * (t + 2.0 * r * mu)) / (r0 + rg), 0.0);  // as altitudeAt
-        float4 fromEnd = sampleInscatter(atmosphere, bruneton, inscatterTable, linearClamp, h0, mu0, muS0, nu, toGround);
+        float4 fromEnd = lookUpInscatter(atmosphere, bruneton, inscatterTable, linearClamp, h0, mu0, muS0, nu, toGround);
         inscatter = max(fromCamera - transmittance.rgbr * fromEnd, 0.0);
         if (modelGround) {
             float3 sunLight = sunTransmittanceAt(atmosphere, bruneton, transmittanceTable, linearClamp, rg, muS0) * max(muS0, 0.0);

@@ -33,11 +33,16 @@ struct BrunetonParameters {
     std::string describe() const;  // everything that changes the tables, as text
 };
 
+// The in-scatter table holds its light times this (half floats would round the light of
+// deep twilight away; shaders/atmosphere/bruneton/lookup.hlsli's kInscatterScale, the same number,
+// says more).
+constexpr double kBrunetonInscatterScale = 1e3;
+
 // The tables render.hlsl reads.
 struct BrunetonTables {
     Texture2D transmittance;  // R32G32B32A32_FLOAT: (mu, r) -> T to the top
     Texture2D irradiance;     // R32G32B32A32_FLOAT: (mu_s, r) -> the sky's irradiance E per unit sun irradiance
-    Texture3D inscatter;      // R16G16B16A16_FLOAT: S, Rayleigh RGB (all orders, over P_R) and single Mie's red
+    Texture3D inscatter;      // R16G16B16A16_FLOAT: S times kBrunetonInscatterScale, Rayleigh RGB (all orders, over P_R) and single Mie's red
 };
 
 // Changes when the parameters or the pre-computation shaders change (YusovTableFiles' tableKey).

@@ -57,6 +57,7 @@ void writeTables(ID3D11Device* device, ID3D11DeviceContext* context, const Brune
     a["firmament.lut.name"] = std::string(
         "in-scatter S(r, mu, mu_s, nu) per unit sun irradiance: RGB Rayleigh single scattering plus every higher order divided by "
         "P_R(nu) (1/sr), A single Mie scattering's red channel without its phase function");
+    a["firmament.lut.scale"] = std::string("the texels hold the light times " + std::to_string(kBrunetonInscatterScale));
     a["firmament.lut.dimensions"] = std::to_string(n.r) + " x " + std::to_string(n.mu) + " x " + std::to_string(n.muS) + " x " +
                                     std::to_string(n.nu) + " (r, mu, mu_s, nu)";
     a["firmament.lut.layout"] = "x: nu slice * " + std::to_string(n.muS) + " + mu_s; y: radius layer * " + std::to_string(n.mu) +

@@ -4,7 +4,7 @@
 //   bruneton-transmittance.exr  float32, x: view zenith cosine (u_mu), y: radius (u_r)
 //   bruneton-irradiance.exr     float32, x: sun zenith cosine, y: radius
 //   bruneton-inscatter.exr      half, the 3D texture's layers stacked: x nu slice * N_mu_s + mu_s,
-//                               y radius layer * N_mu + mu
+//                               y radius layer * N_mu + mu; the light times kBrunetonInscatterScale
 // Each header holds the key, the dimensions, the layout, the parameterization, the ground
 // albedo and the physical constants.
 #include "atmosphere/bruneton/BrunetonPrecomputation.h"

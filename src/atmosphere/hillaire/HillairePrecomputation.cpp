@@ -60,6 +60,8 @@ HillaireParameters HillaireParameters::from(const AtmosphereSettings& settings) 
     p.lut = atmosphere::hillaire::Dimensions::of(settings.resolution);
     p.multipleScatteringDirections = settings.hillaireMultipleScatteringDirections;
     p.multipleScatteringSteps = settings.hillaireMultipleScatteringSteps;
+    p.lut.multipleScatteringMuS *= settings.hillaireMultipleScatteringDetail;
+    p.lut.multipleScatteringR *= settings.hillaireMultipleScatteringDetail;
     return p;
 }
 

@@ -31,7 +31,8 @@ void additional(PanelContext& panel) {
     if (drawsModel(atmosphere, AtmosphereModel::Bruneton2008)) editSettings(panel, "atmosphere", {"groundAlbedo"});
     if (drawsModel(atmosphere, AtmosphereModel::Hillaire2020))
         editSettings(panel, "atmosphere", {"hillaireSkyViewWidth", "hillaireSkyViewHeight", "hillaireSkyViewSteps", "hillaireFroxels",
-                                           "hillaireFroxelSteps", "hillaireMultipleScatteringDirections", "hillaireMultipleScatteringSteps"});
+                                           "hillaireFroxelSteps", "hillaireMultipleScatteringDirections", "hillaireMultipleScatteringSteps",
+                                           "hillaireMultipleScatteringDetail"});
     editSettings(panel, "atmosphere", {"scatteringOrders", "aerosolDensity", "aerosolAbsorption", "mieAsymmetry", "customCoefficients", "ozone",
                                        "lutResolution", "animateSun"});
     if (atmosphere.customCoefficients) editSettings(panel, "atmosphere", {"rayleighColour", "mieColour"});

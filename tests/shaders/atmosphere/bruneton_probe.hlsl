@@ -33,7 +33,7 @@ void inscatter(uint3 id : SV_DispatchThreadID) {
     float muS = dot(q.position.xyz, q.sunDir.xyz) / r;
     float nu = dot(q.viewDir.xyz, q.sunDir.xyz);
     bool toGround = mu < cosHorizonAtRadius(atmosphere, r);
-    float4 s = sampleInscatter(atmosphere, bruneton, inscatterTable, linearClamp, r - atmosphere.earth.x, mu, muS, nu, toGround);
+    float4 s = lookUpInscatter(atmosphere, bruneton, inscatterTable, linearClamp, r - atmosphere.earth.x, mu, muS, nu, toGround);
     float3 radiance = max(s.rgb * rayleighPhase(nu) + mieFromRed(atmosphere, s) * miePhase(nu, atmosphere.mieScattering.w), 0.0);
     results[id.x] = float4(radiance, toGround ? 1.0 : 0.0);
 }
