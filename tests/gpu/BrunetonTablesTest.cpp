@@ -152,8 +152,8 @@ TEST_F(BrunetonModel, TwilightFadesBelowTheTablesLowestSun) {
 // of the texels that hold any light are subnormal numbers (measured 1.7%; 16% with the table
 // unscaled, which failed the test: the twilight sky's texels kept a few bits or none). With the
 // settings' haziest air (aerosol density 5, no absorption), a white ground and 10 orders, the
-// largest texel stays under a quarter of half's largest number, 65504 (measured 6.7e3, the light
-// 6.5 per unit sun irradiance times kBrunetonInscatterScale).
+// largest texel stays under a quarter of half's largest number, 65504 (measured 6.7e3: the light,
+// 6.7 per unit sun irradiance at these sizes, times kBrunetonInscatterScale).
 TEST_F(BrunetonModel, InscatterTableKeepsHalfsPrecision) {
     struct Census {
         size_t nonzero = 0, subnormal = 0;
