@@ -45,8 +45,8 @@ float3 irradianceAt(AtmosphereConstants a, BrunetonConstants b, Texture2D<float4
     return fadeBelowTable(float4(light, 0.0), float4(nextUp, 0.0), (kLowestSun - muS) / spacing).rgb;
 }
 
-// The 4D table at (altitude h, mu, mu_s, nu), in the half of the view zenith axis `groundHalf` says:
-// trilinear in the 3D texture, linear between the two nu slices by hand; faded below the lowest sun.
+// A 4D table at unit coordinates u (u_r, u_mu as a texture coordinate, u_mu_s, u_nu):
+// trilinear in the 3D texture, linear between the two nu slices by hand.
 float4 sampleInscatterAt(BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float4 u) {
     float4 n = b.inscatterSize;
     float slice = u.w * (n.w - 1.0);
@@ -57,6 +57,8 @@ float4 sampleInscatterAt(BrunetonConstants b, Texture3D<float4> lut, SamplerStat
     return lerp(lut.SampleLevel(linearClamp, uvw, 0), lut.SampleLevel(linearClamp, uvw + float3(1.0 / n.w, 0.0, 0.0), 0), weight);
 }
 
+// A 4D table at (altitude h, mu, mu_s, nu), in the half of the view zenith axis `groundHalf` says,
+// as it is stored (the delta tables, or S before its scale is divided out); faded below the lowest sun.
 float4 sampleInscatter(AtmosphereConstants a, BrunetonConstants b, Texture3D<float4> lut, SamplerState linearClamp, float h, float mu,
                        float muS, float nu, bool groundHalf) {
     float4 u = inscatterUnit(a, b, h, mu, muS, nu, groundHalf);
