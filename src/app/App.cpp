@@ -143,7 +143,7 @@ void App::followWindowSize() {
     const int height = std::clamp(window_->clientHeight(), kMinFrameSide, kMaxFrameSide);
     if (width == gpu_->renderer.targets().width() && height == gpu_->renderer.targets().height()) return;
     gpu_->swapChain->resize(width, height);
-    gpu_->renderer.resize(width, height, false);
+    gpu_->renderer.resize(width, height, false, gpu_->hdrPrecision);
     log::info("window: " + std::to_string(window_->clientWidth()) + "x" + std::to_string(window_->clientHeight()) + ", frames at " +
               std::to_string(width) + "x" + std::to_string(height));
 }

@@ -35,7 +35,7 @@ void App::captureView(const CaptureItem& view) {
     notice_.clear();
     noticeIsError_ = false;
     gpu_->renderer.startOver();
-    gpu_->renderer.resize(view.width, view.height, true);
+    gpu_->renderer.resize(view.width, view.height, true, gpu_->hdrPrecision);
     renderFrames(view.frames);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char text[32];

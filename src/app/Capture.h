@@ -1,6 +1,6 @@
 #pragma once
 // Captures of the final frame: the display image as PNG and the HDR frame as OpenEXR (half
-// float RGBA). The EXR header describes the frame: resolution, camera matrices, sun
+// float RGBA, or 32-bit float with --hdr-float32). The EXR header describes the frame: resolution, camera matrices, sun
 // direction, the settings as JSON, the adapter and the Direct3D 11 implementation, the program
 // version, and what the techniques record of themselves (the exposure and operator of the tone
 // mapping).
@@ -26,7 +26,8 @@ struct CaptureDescription {
 
 ExrAttributes captureAttributes(const CaptureDescription& description, int width, int height);
 
-// display: 8-bit RGBA (already sRGB encoded); hdr: RGBA16F. Throws Error.
+// display: 8-bit RGBA (already sRGB encoded); hdr: RGBA16F, or RGBA32F (written as a 32-bit
+// float EXR). Throws Error.
 void writeCapture(const std::filesystem::path& pngPath, const std::filesystem::path& exrPath,
                   const ReadbackImage& display, const ReadbackImage& hdr, const CaptureDescription& description);
 

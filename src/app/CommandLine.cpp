@@ -193,11 +193,16 @@ constexpr OptionRow kOptions[] = {
     {"Running", "--vsync", "on|off", "off", "wait for vertical blank when presenting (default on)", setVsync},
     {"Running", "--capture", "PATH", "shot.png",
      "after the last frame write PATH.png (display) and\n"
-     "PATH.exr (HDR, half float, with the settings in its header);\n"
+     "PATH.exr (HDR, half float unless --hdr-float32, with the\n"
+     "settings in its header);\n"
      "F12 captures PATH-shot-N.png and .exr (without --capture,\n"
      "firmament-shot-N.png in the working folder)",
      setCapture},
     {"Running", "--capture-ui", "", "", "include the GUI in the capture (left out by default)", setFlag<&Options::captureUi>},
+    {"Running", "--hdr-float32", "", "",
+     "draw the HDR frame in 32-bit floats and write 32-bit EXRs,\n"
+     "for measurement (half floats end at 6e-8: deep twilight)",
+     setFlag<&Options::hdrFloat32>},
     {"Settings", "--settings", "FILE", "state.json", "load settings, camera and sun from a JSON state file", setPath<&Options::settingsFile>},
     {"Settings", "--set", "SECTION.KEY=VAL", "camera.fieldOfView=60",
      "change one setting (repeatable, after --settings);\n"

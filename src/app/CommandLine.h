@@ -26,6 +26,7 @@ struct Options {
     std::optional<bool> vsync;     // overrides display.vsync
     std::optional<std::filesystem::path> capture;  // PNG path; the EXR goes beside it (F12's shots too)
     bool captureUi = false;        // the GUI is left out of captures unless asked for
+    bool hdrFloat32 = false;       // the HDR frame (and its EXR) in 32-bit floats, for measurement
     std::optional<std::filesystem::path> shaderDir;
     std::optional<std::filesystem::path> shaderSource;  // HLSL folder for hot reload
     std::string shaderCompiler = "auto";                // auto|d3dcompile|vkd3d|fxc|none

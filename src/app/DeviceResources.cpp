@@ -54,7 +54,8 @@ TableStorage tableStorage(const Options& options) {
 
 DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderCompiler> precompiled, const TableStorage& storage,
                                  HWND window, int width, int height)
-    : device(deviceOptions(options)),
+    : hdrPrecision(options.hdrFloat32 ? HdrPrecision::Float32 : HdrPrecision::Half),
+      device(deviceOptions(options)),
       shaders(device.device(), std::move(precompiled)),
       renderer(device.device(), device.context(), shaders, storage) {
     log::info("device: " + device.describe());
@@ -79,7 +80,7 @@ DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderC
 
     if (!options.headless) swapChain = std::make_unique<SwapChain>(device, window, width, height);
     overlay = std::make_unique<Overlay>(window, device.device(), device.context());
-    renderer.resize(width, height, !swapChain);
+    renderer.resize(width, height, !swapChain, hdrPrecision);
 }
 
 }  // namespace firmament

@@ -34,6 +34,7 @@ struct DeviceResources {
     DeviceResources(const Options& options, std::unique_ptr<ShaderCompiler> precompiled, const TableStorage& storage, HWND window,
                     int width, int height);  // throws Error
 
+    HdrPrecision hdrPrecision;  // the frame's HDR floats (--hdr-float32)
     Device device;
     ShaderLibrary shaders;
     std::unique_ptr<SwapChain> swapChain;  // null when headless

@@ -18,7 +18,7 @@ ShaderKey differencePixelShader(AtmospherePart part) {
 }
 
 void copyTexture(ID3D11Device* device, ID3D11DeviceContext* context, const Texture2D& from, Texture2D& to) {
-    if (to.width != from.width || to.height != from.height)
+    if (to.width != from.width || to.height != from.height || to.format != from.format)
         to = createColorTexture(device, from.width, from.height, from.format, D3D11_BIND_SHADER_RESOURCE);
     context->CopyResource(to.texture.Get(), from.texture.Get());
 }

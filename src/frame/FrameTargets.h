@@ -8,15 +8,19 @@
 
 namespace firmament {
 
+// The HDR radiance's floats: half (RGBA16F, what the frame is drawn in), or 32-bit for
+// measurement (--hdr-float32: half floats end at 6e-8, where deep twilight's sky is).
+enum class HdrPrecision { Half, Float32 };
+
 class FrameTargets {
 public:
     // (Re)creates every target at width x height; `withOutput`: also the 8-bit output target.
-    void resize(ID3D11Device* device, int width, int height, bool withOutput);
+    void resize(ID3D11Device* device, int width, int height, bool withOutput, HdrPrecision precision = HdrPrecision::Half);
 
     // Copies the HDR frame as it is now into sceneCopy() and returns it.
     const Texture2D& copyHdr(ID3D11DeviceContext* context);
 
-    const Texture2D& hdr() const { return hdr_; }          // RGBA16F linear radiance (also a compute target)
+    const Texture2D& hdr() const { return hdr_; }          // RGBA16F (or RGBA32F) linear radiance (also a compute target)
     const Texture2D& depth() const { return depth_; }      // D32 reversed Z (1 near, 0 far, cleared to 0)
     const Texture2D& sceneCopy() const { return sceneCopy_; }
     const Texture2D& output() const { return output_; }    // 8-bit, sRGB-encoded (the swap chain's format); empty with a swap chain

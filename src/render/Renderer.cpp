@@ -52,7 +52,9 @@ void Renderer::startOver() {
     toneMapping_ = std::make_unique<ToneMapping>(device_);
 }
 
-void Renderer::resize(int width, int height, bool ownOutput) { targets_.resize(device_, width, height, ownOutput); }
+void Renderer::resize(int width, int height, bool ownOutput, HdrPrecision precision) {
+    targets_.resize(device_, width, height, ownOutput, precision);
+}
 
 // The frame order (docs/architecture.md, "The frame", numbers its steps as these comments do).
 // Each step is one technique's pass or passes. What one technique hands another (the ground's

@@ -58,8 +58,9 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // (Re)creates the frame targets; `ownOutput`: an 8-bit output target of the renderer's own
-    // (headless runs; a window renders into its swap chain's back buffer).
-    void resize(int width, int height, bool ownOutput);
+    // (headless runs; a window renders into its swap chain's back buffer); `precision`: the HDR
+    // radiance's floats (--hdr-float32).
+    void resize(int width, int height, bool ownOutput, HdrPrecision precision = HdrPrecision::Half);
 
     // As a fresh start would find it, for a batch of captures (--batch): every technique that
     // keeps something from one frame to the next is made again (the exposure's adaptation and

@@ -39,7 +39,7 @@ TEST_P(SkyAgainstReference, EachModelsSkyIsWithinItsMeasuredError) {
     const SkyView v = GetParam();
     const auto folder = std::filesystem::temp_directory_path() / (std::string("firmament-sky-reference-") + v.name);
     std::filesystem::remove_all(folder);
-    std::vector<ExrFile> captures;
+    std::vector<FloatExrFile> captures;
     for (const ModelBounds& b : v.bounds) {
         HeadlessCapture c;
         c.fragment = {{"scene", {{"orientationGrid", false}}},
@@ -54,7 +54,7 @@ TEST_P(SkyAgainstReference, EachModelsSkyIsWithinItsMeasuredError) {
         c.png = folder / (std::string(b.model).substr(0, 5) + ".png");
         const ProcessResult run = captureHeadless(c);
         ASSERT_EQ(run.exitCode, 0u) << run.output;
-        captures.push_back(readExr(std::filesystem::path(c.png).replace_extension(".exr")));
+        captures.push_back(readFloatExr(std::filesystem::path(c.png).replace_extension(".exr")));
     }
     const atmosphere::ReferenceAtmosphere reference(AtmosphereParameters::from(AtmosphereSettings{}));
     const glm::dvec3 camera(0.0, reference.parameters().earthRadius + v.altitude, 0.0);

@@ -2,9 +2,9 @@
 // against the reference atmosphere (tools/score-atmospheres; docs/atmosphere.md, "Scores").
 // PLAN lists, for each point of the grid (altitude, sun elevation, aerosol density), each model's
 // capture of a wide view and of a narrow view 1 degree from the zenith (the nadir from above
-// the atmosphere), and the sampling: "paths" per reference pixel, a grid of "columns" x "rows"
-// pixels, "sunMarginDegrees" left out about the sun; each point's "sunIntensity", the captures'
-// sun irradiance, is divided out. Inside the atmosphere only views of the sky are scored (those
+// the atmosphere), and the sampling: "paths" per reference pixel (a point's own "paths" where
+// it has them), a grid of "columns" x "rows" pixels, "sunMarginDegrees" left out about the sun;
+// each point's "sunIntensity", the captures' sun irradiance, is divided out. Inside the atmosphere only views of the sky are scored (those
 // that meet the black ground say little of a sky model). The reference (support/SkyScore.h) is
 // computed once per pixel for all the models, on every hardware thread, its paths drawn toward the
 // sunlit air (ReferenceAtmosphere::PathSampling::TowardSunlight), and with kZenithTwilightPaths
@@ -39,7 +39,8 @@ constexpr int kZenithTwilightPaths = 32;
 struct Point {
     std::string name;
     double altitude = 0.0, sunElevation = 0.0, aerosolDensity = 1.0, sunIntensity = 1.0;
-    std::map<std::string, ExrFile> wide, zenith;
+    int paths = 0;  // the reference's paths a pixel
+    std::map<std::string, FloatExrFile> wide, zenith;
     std::vector<test::PixelRay> rays;  // the wide view's, then the zenith view's centre last
     std::vector<Estimate> reference;
 };
@@ -67,9 +68,10 @@ int main(int argc, char** argv) {
             point.sunElevation = p.at("sunElevation");
             point.aerosolDensity = p.at("aerosolDensity");
             point.sunIntensity = p.at("sunIntensity");
-            for (const auto& [model, path] : p.at("wide").items()) point.wide[model] = readExr(path.get<std::string>());
-            for (const auto& [model, path] : p.at("zenith").items()) point.zenith[model] = readExr(path.get<std::string>());
-            const ExrFile& first = point.wide.begin()->second;
+            point.paths = p.value("paths", paths);
+            for (const auto& [model, path] : p.at("wide").items()) point.wide[model] = readFloatExr(path.get<std::string>());
+            for (const auto& [model, path] : p.at("zenith").items()) point.zenith[model] = readFloatExr(path.get<std::string>());
+            const FloatExrFile& first = point.wide.begin()->second;
             point.rays = test::sampledRays(first, columns, rows, sunMargin);
             AtmosphereSettings settings;
             settings.aerosolDensity = static_cast<float>(point.aerosolDensity);
@@ -77,7 +79,7 @@ int main(int argc, char** argv) {
             const glm::dvec3 camera(0.0, reference.parameters().earthRadius + point.altitude, 0.0);
             if (point.altitude < reference.parameters().atmosphereHeight)
                 std::erase_if(point.rays, [&](const test::PixelRay& r) { return reference.hitsGround(camera, r.direction); });
-            const ExrFile& zenith = point.zenith.begin()->second;
+            const FloatExrFile& zenith = point.zenith.begin()->second;
             const std::vector<test::PixelRay> centre = test::sampledRays(zenith, 1, 1, 0.0);
             if (centre.size() != 1) throw std::runtime_error(point.name + ": the zenith view's centre is the sun");
             point.rays.push_back(centre[0]);
@@ -100,13 +102,13 @@ int main(int argc, char** argv) {
                 settings.aerosolDensity = static_cast<float>(point.aerosolDensity);
                 const atmosphere::ReferenceAtmosphere reference(AtmosphereParameters::from(settings));
                 const glm::dvec3 start(0.0, reference.parameters().earthRadius + point.altitude, 0.0);
-                const ExrFile& capture = point.wide.begin()->second;
+                const FloatExrFile& capture = point.wide.begin()->second;
                 // The zenith's light in twilight comes from air the sun lights hundreds of
                 // kilometres off: kZenithTwilightPaths times the paths there.
                 const bool twilightZenith = jobs[j].ray + 1 == point.rays.size() && point.sunElevation < 0.0;
                 point.reference[jobs[j].ray] =
                     test::referenceRadiance(reference, start, point.rays[jobs[j].ray].direction, test::directionToSun(capture),
-                                            twilightZenith ? paths * kZenithTwilightPaths : paths, 1000u + static_cast<unsigned>(j),
+                                            twilightZenith ? point.paths * kZenithTwilightPaths : point.paths, 1000u + static_cast<unsigned>(j),
                                             atmosphere::ReferenceAtmosphere::PathSampling::TowardSunlight);
                 if (++done % 200 == 0) std::fprintf(stderr, "reference: %zu of %zu pixels\n", done.load(), jobs.size());
             }
@@ -132,7 +134,7 @@ int main(int argc, char** argv) {
                 for (size_t r = 0; r < wideRays; ++r)
                     radiance.push_back(test::capturedRadiance(capture, point.rays[r].x, point.rays[r].y) / point.sunIntensity);
                 const test::SkyScore s = test::scoreSky(radiance, reference);
-                const ExrFile& zenith = point.zenith.at(model);
+                const FloatExrFile& zenith = point.zenith.at(model);
                 const test::PixelRay& centre = point.rays.back();
                 models[model] = {{"hdrPsnrDb", finiteOr999(s.hdrPsnrDb)},
                                  {"medianRelativeError", s.medianRelativeError},
@@ -147,6 +149,7 @@ int main(int argc, char** argv) {
                            {"aerosolDensity", point.aerosolDensity},
                            {"sunIntensity", point.sunIntensity},
                            {"referencePixels", wideRays},
+                           {"referencePaths", point.paths},
                            {"referenceMedianNoise", noise.empty() ? 0.0 : noise[noise.size() / 2]},
                            {"referenceZenithLuminance", test::luminance(zenith.mean)},
                            {"referenceZenithNoise", test::luminance(zenith.standardError)},

@@ -1,14 +1,12 @@
 #include "support/SkyScore.h"
 
-#include "support/CaptureRadiance.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace firmament::test {
 
-std::vector<PixelRay> sampledRays(const ExrFile& capture, int columns, int rows, double sunMargin) {
+std::vector<PixelRay> sampledRays(const FloatExrFile& capture, int columns, int rows, double sunMargin) {
     glm::mat4 view = std::get<glm::mat4>(capture.attributes.at("firmament.view"));
     view[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);  // directions only
     const glm::mat4 clipToDirection = glm::inverse(std::get<glm::mat4>(capture.attributes.at("firmament.projection")) * view);
@@ -27,7 +25,7 @@ std::vector<PixelRay> sampledRays(const ExrFile& capture, int columns, int rows,
     return rays;
 }
 
-glm::dvec3 directionToSun(const ExrFile& capture) { return glm::dvec3(std::get<glm::vec3>(capture.attributes.at("firmament.directionToSun"))); }
+glm::dvec3 directionToSun(const FloatExrFile& capture) { return glm::dvec3(std::get<glm::vec3>(capture.attributes.at("firmament.directionToSun"))); }
 
 atmosphere::ReferenceAtmosphere::Estimate referenceRadiance(const atmosphere::ReferenceAtmosphere& reference, glm::dvec3 start, glm::dvec3 view,
                                                             glm::dvec3 sun, int paths, unsigned seed,
@@ -72,8 +70,9 @@ SkyScore scoreSky(const std::vector<glm::dvec3>& model, const std::vector<glm::d
     return s;
 }
 
-glm::dvec3 capturedRadiance(const ExrFile& capture, int x, int y) {
-    return {exrChannel(capture, x, y, 0), exrChannel(capture, x, y, 1), exrChannel(capture, x, y, 2)};
+glm::dvec3 capturedRadiance(const FloatExrFile& capture, int x, int y) {
+    const float* rgba = &capture.image.rgba[(static_cast<size_t>(y) * capture.image.width + x) * 4];
+    return {rgba[0], rgba[1], rgba[2]};
 }
 
 }  // namespace firmament::test

@@ -27,9 +27,9 @@ struct PixelRay {
 // The view rays of a grid of `columns` x `rows` pixels of a capture (its header's view and
 // projection matrices, rebuilt as the program builds them), leaving out those within
 // `sunMargin` radians of the sun (its disc and the aureole's peak, which no reference path
-// resolves).
-std::vector<PixelRay> sampledRays(const ExrFile& capture, int columns, int rows, double sunMargin);
-glm::dvec3 directionToSun(const ExrFile& capture);
+// resolves). The captures are read with readFloatExr, half float or 32-bit (--hdr-float32).
+std::vector<PixelRay> sampledRays(const FloatExrFile& capture, int columns, int rows, double sunMargin);
+glm::dvec3 directionToSun(const FloatExrFile& capture);
 
 // The light of every order along a view from `start`, per unit sun irradiance, and its standard
 // error (the path-traced orders' only), the paths drawn as `sampling` says.
@@ -51,6 +51,6 @@ struct SkyScore {
 SkyScore scoreSky(const std::vector<glm::dvec3>& model, const std::vector<glm::dvec3>& reference);
 
 // A capture's radiance at a pixel.
-glm::dvec3 capturedRadiance(const ExrFile& capture, int x, int y);
+glm::dvec3 capturedRadiance(const FloatExrFile& capture, int x, int y);
 
 }  // namespace firmament::test
