@@ -21,7 +21,7 @@ BenchmarkRun runBenchmark(Renderer& renderer, ID3D11DeviceContext* context, cons
         log::info("benchmark: " + std::to_string(i + 1) + " of " + std::to_string(plan.scenarios.size()) + ": " + scenario.name);
         if (scenario.resolution != size) {
             size = scenario.resolution;
-            renderer.resize(size.x, size.y, true);
+            renderer.resize(size.x, size.y, true, renderer.targets().precision());  // as --hdr-float32 made it
         }
         FrameTime time{0.0, kFrameStep};
         for (int frame = 0; frame < plan.warmupFrames; ++frame, time.seconds += kFrameStep)

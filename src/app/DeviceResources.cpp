@@ -81,6 +81,7 @@ DeviceResources::DeviceResources(const Options& options, std::unique_ptr<ShaderC
     if (!options.headless) swapChain = std::make_unique<SwapChain>(device, window, width, height);
     overlay = std::make_unique<Overlay>(window, device.device(), device.context());
     renderer.resize(width, height, !swapChain, hdrPrecision);
+    if (hdrPrecision == HdrPrecision::Float32) log::info("HDR frame: 32-bit floats (--hdr-float32)");
 }
 
 }  // namespace firmament

@@ -12,6 +12,7 @@ void FrameTargets::resize(ID3D11Device* device, int width, int height, bool with
     output_ = withOutput ? createColorTexture(device, width, height, SwapChain::kFormat, D3D11_BIND_RENDER_TARGET) : Texture2D{};
     width_ = width;
     height_ = height;
+    precision_ = precision;
 }
 
 const Texture2D& FrameTargets::copyHdr(ID3D11DeviceContext* context) {

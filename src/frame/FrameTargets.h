@@ -26,6 +26,7 @@ public:
     const Texture2D& output() const { return output_; }    // 8-bit, sRGB-encoded (the swap chain's format); empty with a swap chain
     int width() const { return width_; }
     int height() const { return height_; }
+    HdrPrecision precision() const { return precision_; }
 
 private:
     Texture2D hdr_;
@@ -34,6 +35,7 @@ private:
     Texture2D output_;
     int width_ = 0;
     int height_ = 0;
+    HdrPrecision precision_ = HdrPrecision::Half;
 };
 
 }  // namespace firmament
