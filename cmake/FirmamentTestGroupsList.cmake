@@ -8,8 +8,23 @@ if(NOT EXISTS "${executable}")
     return()
 endif()
 if(NOT EXISTS "${FIRMAMENT_GROUP_LIST}" OR "${executable}" IS_NEWER_THAN "${FIRMAMENT_GROUP_LIST}")
+    # Every suite, whatever filter or shard the caller's environment names (a run with
+    # GTEST_FILTER set would otherwise keep a partial list until the next build); the environment
+    # is put back for the tests.
+    set(gtest_variables GTEST_FILTER GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX)
+    foreach(variable IN LISTS gtest_variables)
+        if(DEFINED ENV{${variable}})
+            set(saved_${variable} "$ENV{${variable}}")
+            unset(ENV{${variable}})
+        endif()
+    endforeach()
     execute_process(COMMAND ${FIRMAMENT_GROUP_EMULATOR} ${executable} --gtest_list_tests
         OUTPUT_VARIABLE listing ERROR_VARIABLE errors RESULT_VARIABLE status TIMEOUT 120)
+    foreach(variable IN LISTS gtest_variables)
+        if(DEFINED saved_${variable})
+            set(ENV{${variable}} "${saved_${variable}}")
+        endif()
+    endforeach()
     if(NOT status EQUAL 0)
         # A test that fails, so that an executable that cannot list its tests is not silently skipped.
         message(WARNING "${FIRMAMENT_GROUP_TARGET} --gtest_list_tests failed (${status}): ${errors}")
