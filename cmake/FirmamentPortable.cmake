@@ -93,6 +93,7 @@ add_executable(firmament_portable_tests
     ${tests}/unit/CameraTest.cpp
     ${tests}/unit/CascadeSplitsTest.cpp
     ${tests}/unit/CloudGridTest.cpp
+    ${tests}/unit/SunColumnTwinTest.cpp
     ${tests}/unit/CommandLineTest.cpp
     ${tests}/unit/ExrImageTest.cpp
     ${tests}/unit/FileIOTest.cpp

@@ -12,8 +12,8 @@
 //    particle's optical radius, at the view ray's entry point and direction against the sun,
 //    times the Henyey-Greenstein phase function for the actual angle, lit by the direct sunlight
 //    through the particles nearer the sun (clouds/particle_opacity.hlsl) at the delta-M scaled
-//    extinction; multiple scattering by deck diffusion through the particle's column along the
-//    sun, or (Multiple scattering: Particle table) the table's; plus the ambient light scattered
+//    extinction; multiple scattering by deck diffusion through the particle's deck along the sun
+//    (its column unbroken by clear air), or (Multiple scattering: Particle table) the table's; plus the ambient light scattered
 //    by a white cloud (E_sky / pi, brighter at the particle's top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
 //    the atmosphere's transmittance and in-scattering (Yusov's render modes, Bruneton's
@@ -41,7 +41,7 @@ cbuffer CloudShadingBuffer : register(b3) { CloudShadingConstants shading; };
 Texture3D<float> opticalDepthTable : register(t2);
 Texture2D<float> sceneDepth : register(t3);  // the frame's, or its low-resolution copy (Downscale)
 Texture3D<float4> scatteringTable : register(t4);  // x single scattering, z the forward peak's (phases excluded), y multiple
-StructuredBuffer<float2> particleSunColumn : register(t10);  // by slot: the optical depths nearer the sun and beyond (clouds/particle_opacity.hlsl)
+StructuredBuffer<float4> particleSunColumn : register(t10);  // by slot: the optical depths nearer the sun and beyond, and their deck's parts (clouds/particle_opacity.hlsl)
 SamplerState linearWrap : register(s0);
 SamplerState linearClamp : register(s1);
 
@@ -66,8 +66,9 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float3 sunLight, skyLight;
     lightAtPoint(p.centre.xyz, sunLight, skyLight);
     // The particle's column along the sun (clouds/particle_opacity.hlsl): x the optical depth
-    // nearer the sun, y beyond it; and its own, through its centre (the optical depth table).
-    float2 column = particleSunColumn[input.slot];
+    // nearer the sun, y beyond it, z and w their parts in the particle's deck (no clear air between
+    // them and the particle); and its own, through its centre (the optical depth table).
+    float4 column = particleSunColumn[input.slot];
     ParticleHit axis;
     hitParticleFrom(p, p.centre.xyz - 4.0 * max(p.centre.w, p.shape.x) * sun, sun, axis);
     float own = particleOpticalDepth(p, axis, axis.far - axis.near, opticalDepthTable, linearWrap);
@@ -93,9 +94,12 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float single = direct * (scattered.x * henyeyGreenstein(cosine, kDropletAsymmetry) + scattered.z * peak) +
                    (scaledDirect - direct) * (kScaledExtinctionShare * scattered.x + scattered.z) * peak;
     // Multiple scattering: deck diffusion at the particle's face towards the camera, in the slab
-    // of its whole column (mu = 1 looks at the face away from the sun), less its single
-    // scattering (Nakajima and Tanaka 1988); or the table's, of the particle alone.
-    float multiple = shading.light.y < 0.5 ? deckMultipleScattering(column.x + opticalRadius * (1.0 + cosine), column.x + own + column.y, cosine)
+    // of its deck (the column's part unbroken by clear air; mu = 1 looks at the face away from the
+    // sun), less its single scattering (Nakajima and Tanaka 1988), lit by the sunlight that crosses
+    // the clouds nearer the sun beyond the gaps at the scaled extinction (their diffuse light leaves
+    // them through the gaps' open sides); or the table's, of the particle alone.
+    float multiple = shading.light.y < 0.5 ? exp(-kScaledExtinctionShare * (column.x - column.z)) *
+                                                 deckMultipleScattering(column.z + opticalRadius * (1.0 + cosine), column.z + own + column.w, cosine)
                                            : scaledDirect * scattered.y * perOpacity;
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);

@@ -40,9 +40,10 @@ enum class CloudRenderer { Particles, PathTracedReference };
 inline constexpr std::array<std::string_view, 2> kCloudRendererNames{"Particles", "Reference (path traced)"};
 
 // "Multiple scattering": the light scattered more than once, from deck diffusion through each
-// particle's column along the sun (delta-Eddington; docs/clouds.md, "Deck diffusion"), or from
-// the scattering table's multiple scattering of the particle alone, dimmed by the delta-M scaled
-// transmittance of the particles nearer the sun (Yusov 2014's approach), for comparison.
+// particle's deck along the sun, its column unbroken by clear air (delta-Eddington;
+// docs/clouds.md, "Deck diffusion"), or from the scattering table's multiple scattering of the
+// particle alone, dimmed by the delta-M scaled transmittance of the particles nearer the sun
+// (Yusov 2014's approach), for comparison.
 enum class MultipleScattering { DeckDiffusion, ParticleTable };
 inline constexpr std::array<std::string_view, 2> kMultipleScatteringNames{"Deck diffusion", "Particle table"};
 

@@ -24,6 +24,11 @@ inline constexpr double kScaledExtinctionShare = 1.0 - 0.9 * 0.9;
 // at most 6% however much thicker the column is (docs/clouds.md, "Light occlusion"), and the
 // direct sunlight e^(-(1 - g^2) tau) is below 1e-21.
 inline constexpr double kOpacityEarlyExitDepth = 256.0;
+// A particle's deck along the sun (deck diffusion's slab) bridges gaps of clear air up to this
+// share of the particle's half-width across the sun's ray; a longer gap ends it (shaders/clouds/
+// deck_chords.hlsli's kDeckGapShare; chosen by measurement against the path-traced reference,
+// docs/clouds.md, "Deck diffusion").
+inline constexpr double kDeckGapShare = 0.25;
 
 // Axes of a map seen from the sun: right and up across its rays, and the direction to it (unit).
 struct SunFrame {

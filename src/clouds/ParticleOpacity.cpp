@@ -33,7 +33,7 @@ void ParticleOpacity::resize(ID3D11Device* device, unsigned particleCapacity, in
     }
     if (particleCapacity != particleCapacity_) {
         particleCapacity_ = particleCapacity;
-        column_ = createStructuredBuffer(device, std::max(particleCapacity, 1u), 8, nullptr, "cloud particles' columns along the sun");
+        column_ = createStructuredBuffer(device, std::max(particleCapacity, 1u), sizeof(float) * 4, nullptr, "cloud particles' columns along the sun");
     }
     // A particle covers about (its footprint / the tile)^2 tiles: 4x as many per doubling.
     const size_t perParticle = size_t{kNodesPerParticle} * static_cast<size_t>(resolution / 512 > 1 ? (resolution / 512) * (resolution / 512) : 1);

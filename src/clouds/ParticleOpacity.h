@@ -1,7 +1,8 @@
 #pragma once
 // Each cloud particle's column along the sun: the optical depth of the particles nearer the sun,
 // and of those beyond it (Yusov 2014, "Computing light occlusion", which finds the first; deck
-// diffusion needs both; docs/clouds.md, "Light occlusion"), on the GPU each frame:
+// diffusion needs both), and of each the part in the particle's deck, unbroken by clear air
+// (docs/clouds.md, "Light occlusion" and "Deck diffusion"), on the GPU each frame:
 //  1. tiling: the particles rasterized from the sun into the light-space grid
 //     (clouds/tile_particles.hlsl), each appended to the list of every tile its footprint covers;
 //  2. the lists ordered from the sun, each in place (clouds/order_tiles.hlsl);
@@ -9,7 +10,7 @@
 //     past itself to the end or, with the early exit, until the column is kOpacityEarlyExitDepth
 //     thick (clouds/particle_opacity.hlsl).
 // The shading lights the particle by the direct sun through the column above and by deck
-// diffusion through the whole column. The CPU twin is src/reference/SunColumnTwin.
+// diffusion through its deck. The CPU twin is src/reference/SunColumnTwin.
 #include "clouds/CloudSettings.h"
 #include "clouds/CloudStructures.h"
 #include "gpu/Buffers.h"
@@ -40,7 +41,8 @@ public:
     void compute(FrameContext& frame, CloudParticles& particles, const ParticleTables& tables, const CloudSettings& settings);
     // Light occlusion off: every particle's column empty (the sun unoccluded, no deck around it).
     void clear(ID3D11Device* device, ID3D11DeviceContext* context, unsigned particleCapacity);
-    // The particles' columns, by slot (StructuredBuffer<float2>: the optical depths above and beyond).
+    // The particles' columns, by slot (StructuredBuffer<float4>: the optical depths above and beyond,
+    // then their parts in the particle's deck).
     ID3D11ShaderResourceView* sunColumn() const { return column_.srv.Get(); }
     ID3D11Buffer* sunColumnBuffer() const { return column_.buffer.Get(); }
     const gpu::CloudLightSpaceConstants& constants() const { return constants_; }
