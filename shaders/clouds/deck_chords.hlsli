@@ -4,8 +4,8 @@
 // chords of other particles that the ray from the particle's centre crosses without a stretch of
 // clear air between them and the particle longer than kDeckGapShare of the particle's half-width
 // across the ray (through a shorter gap the diffuse light goes on into the next cloud; through a
-// longer one it leaves by the gap's open sides). clouds/particle_opacity.hlsl meets the chords in its
-// tile list's order, by the particles' centres, which is not the order of where the chords start:
+// longer one it leaves by the gap's open sides). clouds/particle_opacity.hlsl meets the chords in
+// its tile list's order, by the particles' centres, which is not the order of where they start:
 // a wide particle met late may bridge a gap between chords met earlier. So the chords not yet
 // joined to the deck wait as up to four separate runs, merged with each other and with the deck
 // as later chords bridge them. With more than four runs waiting, the one starting farthest from

@@ -7,11 +7,11 @@
 // which deck diffusion needs (the light a deck sends back up depends on how much cloud is below).
 // Of each column it also keeps the part of the particle's own deck: the cloud that the ray crosses
 // without a longer stretch of clear air between it and the particle than a quarter of the
-// particle's width across the ray (docs/clouds.md, "Deck diffusion": diffuse light leaves a deck
-// at a gap). With the early exit, it stops once the two columns
-// together pass the threshold (src/clouds/LightSpace.h, kOpacityEarlyExitDepth). The CPU twin is
-// src/reference/SunColumnTwin.cpp's sunColumn(), which finds the deck from the union of every
-// chord; this walk finds it in one pass, in the list's order (clouds/deck_chords.hlsli).
+// particle's half-width across the ray (docs/clouds.md, "Deck diffusion": diffuse light leaves a
+// deck at a gap). With the early exit, it stops once the two columns together pass the threshold
+// (src/clouds/LightSpace.h, kOpacityEarlyExitDepth). The CPU twin is src/reference/
+// SunColumnTwin.cpp's sunColumn(), which finds the deck from the union of every chord; this walk
+// finds it in one pass, in the list's order (clouds/deck_chords.hlsli).
 #include "clouds/deck_chords.hlsli"
 #include "clouds/light_space.hlsli"
 #include "clouds/optical_depth_table.hlsli"

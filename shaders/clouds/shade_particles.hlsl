@@ -13,8 +13,9 @@
 //    times the Henyey-Greenstein phase function for the actual angle, lit by the direct sunlight
 //    through the particles nearer the sun (clouds/particle_opacity.hlsl) at the delta-M scaled
 //    extinction; multiple scattering by deck diffusion through the particle's deck along the sun
-//    (its column unbroken by clear air), or (Multiple scattering: Particle table) the table's; plus the ambient light scattered
-//    by a white cloud (E_sky / pi, brighter at the particle's top).
+//    (its column unbroken by clear air), or (Multiple scattering: Particle table) the table's;
+//    plus the ambient light scattered by a white cloud (E_sky / pi, brighter at the particle's
+//    top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
 //    the atmosphere's transmittance and in-scattering (Yusov's render modes, Bruneton's
 //    S(x, v) - T S(x0, v), or Hillaire's march), so that the cloud
