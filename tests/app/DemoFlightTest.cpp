@@ -105,11 +105,15 @@ TEST(DemoFlight, EveryCaptureIsAKeyframesViewUnderOrAboveTheCloudsAndWellExposed
         }
 
         // Metered, not dark and not blown out. Measured at 256x144 (2026-12-03): mean luma 121 to
-        // 150; a share of 0.7% to 7% clipped, the most in the sunrise's glow around the sun.
+        // 150; a share of 0.7% to 7% clipped, the most in the sunrise's glow around the sun. Since
+        // deck diffusion's deck ends at a gap of clear air (2026-12-07), the low sun's deck has
+        // dark bodies with lit edges instead of a flat gold (docs/clouds.md, "Deck diffusion"), the
+        // metered exposure rises, and the glow band along the horizon clips more: mean luma 125 to
+        // 143; 0.1% to 12.3% clipped (the sunrise 12.3%, the haze 9.4%).
         const Exposure exposure = measureExposure(readPng(folder / (stem + ".png")));
         EXPECT_GT(exposure.meanLuma, 70.0);
         EXPECT_LT(exposure.meanLuma, 190.0);
-        EXPECT_LT(exposure.clipped, 0.12);
+        EXPECT_LT(exposure.clipped, 0.16);
         std::printf("%s: mean luma %.1f, %.2f%% of the pixels clipped\n", stem.c_str(), exposure.meanLuma, 100.0 * exposure.clipped);
     }
     std::filesystem::remove_all(folder);
