@@ -93,7 +93,6 @@ add_executable(firmament_portable_tests
     ${tests}/unit/CameraTest.cpp
     ${tests}/unit/CascadeSplitsTest.cpp
     ${tests}/unit/CloudGridTest.cpp
-    ${tests}/unit/SunColumnTwinTest.cpp
     ${tests}/unit/CommandLineTest.cpp
     ${tests}/unit/ExrImageTest.cpp
     ${tests}/unit/FileIOTest.cpp
@@ -111,6 +110,7 @@ add_executable(firmament_portable_tests
     ${tests}/unit/SoakScheduleTest.cpp
     ${tests}/unit/StepTimerTest.cpp
     ${tests}/unit/SunAnimationTest.cpp
+    ${tests}/unit/SunColumnTwinTest.cpp
     ${tests}/unit/TerrainGeneratorTest.cpp
     ${tests}/unit/ToneMappingCurvesTest.cpp
     ${tests}/unit/VolumeBlendingTest.cpp
