@@ -100,10 +100,9 @@ public:
     const AtmosphereParameters& parameters() const { return p_; }
 
 private:
-    // The integral of T(C -> P) (beta_R rho_R w_R + beta_M rho_M w_M) T_sun(P) ds: single
-    // scattering with the weights the phases, or one species with weights 1 and 0.
-    glm::dvec3 weightedScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround, double rayleighWeight,
-                                  double mieWeight) const;
+    // Both species' integrals along the view ray in one pass (they share the transmittances):
+    // S_R = integral of T(C -> P) beta_R rho_R T_sun(P) ds, and S_M with beta_M rho_M.
+    SpeciesScattering speciesScattering(glm::dvec3 start, glm::dvec3 viewDir, glm::dvec3 sunDir, bool hitsGround) const;
     // One path from `start` along `dir`: the light of orders minOrder..maxOrder it gathers.
     glm::dvec3 tracePath(glm::dvec3 start, glm::dvec3 dir, glm::dvec3 sunDir, int minOrder, int maxOrder, PathSampling sampling,
                          std::mt19937_64& random) const;

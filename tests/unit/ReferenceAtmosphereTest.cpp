@@ -63,6 +63,31 @@ TEST(ReferenceAtmosphere, SingleScatteringHasTheOpticallyThinLimit) {
     }
 }
 
+// Looking up from the ground with the sun at the zenith, the light scattered at P has crossed
+// the whole column once, T(C -> P) T_sun(P) = T(ground -> top) wherever P is, so
+// L1 = T(ground -> top) sum over species of beta P(1) H (1 - exp(-H_atm / H)), with the air
+// made 20 times as dense (blue's column transmittance under 1%). This holds the attenuation
+// towards the camera, which singleScattering accumulates node by node along the ray, to the
+// closed form: a node's depth counted twice, or a step left out, breaks it.
+TEST(ReferenceAtmosphere, SingleScatteringUpTheSunsRayCrossesTheColumnOnce) {
+    AtmosphereParameters p;
+    p.rayleighScattering *= 20.0;
+    p.mieScattering *= 20.0;
+    p.mieExtinction *= 20.0;
+    const ReferenceAtmosphere reference(p);
+    const glm::dvec3 L = reference.singleScattering({0.0, 1.0, 1.0, 1.0});
+    const double rayleighPath = p.rayleighScaleHeight * (1.0 - std::exp(-p.atmosphereHeight / p.rayleighScaleHeight));
+    const double miePath = p.mieScaleHeight * (1.0 - std::exp(-p.atmosphereHeight / p.mieScaleHeight));
+    const glm::dvec3 column = glm::exp(-(p.rayleighScattering * rayleighPath + p.mieExtinction * miePath));
+    EXPECT_LT(column.b, 0.01);
+    for (int c = 0; c < 3; ++c) {
+        const double expected =
+            column[c] * (p.rayleighScattering[c] * rayleighPhase(1.0) * rayleighPath + p.mieScattering[c] * miePhase(1.0, p.mieAsymmetry) * miePath);
+        std::printf("channel %d: %.12e against %.12e\n", c, L[c], expected);
+        EXPECT_NEAR(L[c], expected, 1e-9 * expected) << "channel " << c;
+    }
+}
+
 TEST(ReferenceAtmosphere, PhaseFunctionsIntegrateToOneOverTheSphere) {
     for (const double g : {0.0, 0.5, 0.76, 0.9}) {
         const double mie = 2.0 * kPi * gaussLegendre([&](double mu) { return miePhase(mu, g); }, -1.0, 1.0, 256);
