@@ -317,7 +317,9 @@ protected:
         AtmosphereSettings settings;
         settings.resolution = LutResolution::Medium;
         settings.scatteringOrders = 4;
-        Atmosphere atmosphere(device(), TableStorage{});
+        // The same tables for every case (Medium, 4 orders): computed at the first.
+        if (!atmosphere_) atmosphere_ = std::make_unique<Atmosphere>(device(), TableStorage{});
+        Atmosphere& atmosphere = *atmosphere_;
         settings.singleScattering = SingleScatteringMode::Table;
         settings.multipleScattering = MultipleScatteringMode::None;
         const Probed lut = probe(c, atmosphere, settings, kSingleTableId);
@@ -426,6 +428,7 @@ protected:
     }
     std::map<std::array<double, 6>, atmosphere::ReferenceAtmosphere::Estimate> highOrderEstimates_;
     bool highOrders_ = false;  // checkTableModes also holds the higher orders to Monte Carlo (about 40 s)
+    std::unique_ptr<Atmosphere> atmosphere_;  // checkTableModes' tables, shared by its cases
     void checkTableModesAtTheNearCascades();
     void checkTableModesAtBothSetUps();
 
