@@ -136,15 +136,8 @@ ReferenceAtmosphere::SpeciesScattering ReferenceAtmosphere::speciesScattering(gl
     // the ray: the net density from the camera to a node is the previous node's plus one 8-point
     // rule over the short step between them (a step is under 1/48 of the stretch, where the
     // density's scale heights make the rule exact to rounding).
-    const auto netDensityOfStep = [&](double from, double to) {
-        const double centre = 0.5 * (from + to), half = 0.5 * (to - from);
-        glm::dvec3 sum(0.0);
-        for (size_t k = 0; k < kNodes.size(); ++k)
-            sum += kWeights[k] * half *
-                   (density(glm::length(start + viewDir * (centre - half * kNodes[k])) - p_.earthRadius) +
-                    density(glm::length(start + viewDir * (centre + half * kNodes[k])) - p_.earthRadius));
-        return sum;
-    };
+    const auto densityAt = [&](double s) { return density(glm::length(start + viewDir * s) - p_.earthRadius); };
+    constexpr int kHalfNodes = static_cast<int>(kNodes.size());
     SpeciesScattering total{glm::dvec3(0.0), glm::dvec3(0.0)};
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double s0 = cuts[i], s1 = cuts[i + 1];
@@ -154,15 +147,14 @@ ReferenceAtmosphere::SpeciesScattering ReferenceAtmosphere::speciesScattering(gl
         const double width = (s1 - s0) / kScatteringSegments, half = 0.5 * width;
         for (int segment = 0; segment < kScatteringSegments; ++segment) {
             const double centre = s0 + (segment + 0.5) * width;
-            for (int n = 0; n < 2 * static_cast<int>(kNodes.size()); ++n) {
+            for (int n = 0; n < 2 * kHalfNodes; ++n) {
                 // Nodes from the nearest to the farthest: -x_3, -x_2, ..., x_2, x_3.
-                const size_t k = n < 4 ? 3 - static_cast<size_t>(n) : static_cast<size_t>(n) - 4;
-                const double s = centre + (n < 4 ? -half : half) * kNodes[k];
-                toNode += netDensityOfStep(previous, s);
+                const auto k = static_cast<size_t>(n < kHalfNodes ? kHalfNodes - 1 - n : n - kHalfNodes);
+                const double s = centre + (n < kHalfNodes ? -half : half) * kNodes[k];
+                toNode += gaussLegendre3(densityAt, previous, s, 1);
                 previous = s;
-                const glm::dvec3 point = start + viewDir * s;
-                const glm::dvec3 rho = density(glm::length(point) - p_.earthRadius);
-                const glm::dvec3 light = kWeights[k] * half * glm::exp(-opticalDepth(toNode)) * sunTransmittance(point, sunDir);
+                const glm::dvec3 rho = densityAt(s);
+                const glm::dvec3 light = kWeights[k] * half * glm::exp(-opticalDepth(toNode)) * sunTransmittance(start + viewDir * s, sunDir);
                 total.rayleigh += p_.rayleighScattering * rho.x * light;
                 total.mie += p_.mieScattering * rho.y * light;
             }

@@ -330,10 +330,10 @@ TEST_F(BrunetonModel, HighOrderScatteringMatchesMonteCarlo) {
 // the brightest channel or kRadianceFloor. Measured at 200 points: orders 2-4 median 0, 90th
 // percentile 5.7%, largest 19% over rays of 5 km or more; the whole table 0, 10%, 29%. At the
 // first 100 of them: 0, 5.8%, 19%; the whole table 0, 11%, 18%. (At the first 80 the 90th
-// percentile of orders 2-4 read 11%, over its bound: the quick tier takes 100.) Steep rays to the ground from a few
-// kilometres and less are up to 2-3 times off and left out of the largest: the 2008 u_mu maps
-// distances under r - Rg onto the nadir texel, so they interpolate towards the next texel's much
-// longer ray (docs/atmosphere.md, "Short rays to the ground").
+// percentile of orders 2-4 read 11%, over its bound: the quick tier takes 100.) Steep rays to
+// the ground from a few kilometres and less are up to 2-3 times off and left out of the largest:
+// the 2008 u_mu maps distances under r - Rg onto the nadir texel, so they interpolate towards the
+// next texel's much longer ray (docs/atmosphere.md, "Short rays to the ground").
 void BrunetonModel::checkInscatterAtRandomPoints(int points) {
     constexpr double kMedian = 0.02, kNinetieth = 0.1, kLargest = 0.3, kShortRay = 5000.0;
     constexpr double kTotalMedian = 0.02, kTotalNinetieth = 0.15, kTotalLargest = 0.45;
