@@ -46,11 +46,13 @@ add_library(firmament_portable STATIC
     ${src}/reference/CloudPathTracer.cpp
     ${src}/reference/DeckDiffusion.cpp
     ${src}/reference/HillaireMultipleScatteringTwin.cpp
+    ${src}/clouds/DeckDiffusionTable.cpp
     ${src}/clouds/LightSpace.cpp
     ${src}/clouds/OpticalDepthTable.cpp
     ${src}/clouds/ParticleBlending.cpp
     ${src}/clouds/ParticleDensity.cpp
     ${src}/clouds/ParticleScattering.cpp
+    ${src}/clouds/SlabDoubling.cpp
     ${src}/reference/SunColumnTwin.cpp
     ${src}/reference/VolumeBlendingTwin.cpp
     ${src}/core/Camera.cpp
@@ -103,6 +105,8 @@ add_executable(firmament_portable_tests
     ${tests}/unit/HidReportsTest.cpp
     ${tests}/unit/ParticleDensityTest.cpp
     ${tests}/unit/ParticleScatteringTest.cpp
+    ${tests}/unit/DeckDiffusionTest.cpp
+    ${tests}/unit/SlabDoublingTest.cpp
     ${tests}/unit/PngImageTest.cpp
     ${tests}/unit/ReferenceAtmosphereTest.cpp
     ${tests}/unit/SettingsTest.cpp

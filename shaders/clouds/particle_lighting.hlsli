@@ -3,8 +3,9 @@
 // The light a cloud particle scatters: the scattering table's spheres of every optical radius
 // (src/clouds/ParticleScattering.h; docs/clouds.md, "Scattering table"), and deck diffusion
 // (docs/clouds.md, "Deck diffusion"). The includer declares
-// Texture3D<float4> scatteringTable, SamplerState linearWrap and cbuffer `shading`
-// (CloudShadingConstants); kTablePi comes from clouds/optical_depth_table.hlsli.
+// Texture3D<float4> scatteringTable, Texture3D<float> deckDiffusionTable, SamplerState linearWrap
+// and linearClamp and cbuffer `shading` (CloudShadingConstants); kTablePi comes from
+// clouds/optical_depth_table.hlsli.
 
 static const float kDropletAsymmetry = 0.9;  // Henyey-Greenstein g of the droplets (the table's)
 // The share of the extinction that light scattered into the droplets' forward peak still sees:
@@ -90,6 +91,26 @@ float deckSingleScattering(float depth, float total, float mu) {
 // Deck diffusion's light scattered more than once.
 float deckMultipleScattering(float depth, float total, float mu) {
     return max(deckDiffuseRadiance(depth, total, mu) - deckSingleScattering(depth, total, mu), 0.0);
+}
+
+// Deck diffusion, solved slab (docs/clouds.md, "Deck diffusion"; src/clouds/DeckDiffusionTable.h):
+// the radiance scattered more than once (1/sr, per unit sun irradiance) at optical depth `depth` of a
+// slab of cloud of optical thickness `total` lit along its normal, both along the sun's rays,
+// travelling at cosine mu to the sun's light (1: away from the sun), from the table solved by
+// doubling and adding in the delta-M scaled medium (the same medium as deckDiffuseRadiance()'s). Node k of each axis at texel k: the cosine -1 + 2k / (cosines - 1), the
+// depth's share (1 - cos(pi k / (depths - 1))) / 2, the thickness thinnest x 2^(k / per octave);
+// a slab thinner than the thinnest scales as light scattered twice, by the thickness squared.
+// src/reference/DeckDiffusion.h's solvedSlabMultipleScattering() is the CPU twin.
+float solvedSlabMultipleScattering(float depth, float total, float mu) {
+    float4 n = shading.deck;
+    float thinnest = shading.light.z;
+    float x = (clamp(mu, -1.0, 1.0) + 1.0) * 0.5 * (n.x - 1.0);
+    float share = total > 0.0 ? saturate(depth / total) : 0.0;
+    float y = acos(1.0 - 2.0 * share) / kTablePi * (n.y - 1.0);
+    float z = clamp(log2(max(total, 1e-30) / thinnest) * n.w, 0.0, n.z - 1.0);
+    float thin = total / thinnest;
+    float scale = total < thinnest ? thin * thin : 1.0;
+    return scale * deckDiffusionTable.SampleLevel(linearClamp, (float3(x, y, z) + 0.5) / n.xyz, 0.0);
 }
 
 #endif

@@ -13,7 +13,8 @@
 //    times the Henyey-Greenstein phase function for the actual angle, lit by the direct sunlight
 //    through the particles nearer the sun (clouds/particle_opacity.hlsl) at the delta-M scaled
 //    extinction; multiple scattering by deck diffusion through the particle's deck along the sun
-//    (its column unbroken by clear air), or (Multiple scattering: Particle table) the table's;
+//    (its column unbroken by clear air; Eddington's, or the slab solved exactly), or (Multiple
+//    scattering: Particle table) the table's;
 //    plus the ambient light scattered by a white cloud (E_sky / pi, brighter at the particle's
 //    top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
@@ -43,6 +44,7 @@ Texture3D<float> opticalDepthTable : register(t2);
 Texture2D<float> sceneDepth : register(t3);  // the frame's, or its low-resolution copy (Downscale)
 Texture3D<float4> scatteringTable : register(t4);  // x single scattering, z the forward peak's (phases excluded), y multiple
 StructuredBuffer<float4> particleSunColumn : register(t10);  // by slot: the optical depths nearer the sun and beyond, and their deck's parts (clouds/particle_opacity.hlsl)
+Texture3D<float> deckDiffusionTable : register(t11);  // deck diffusion's light scattered more than once (src/clouds/DeckDiffusionTable.h)
 SamplerState linearWrap : register(s0);
 SamplerState linearClamp : register(s1);
 
@@ -99,9 +101,11 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     // sun), less its single scattering (Nakajima and Tanaka 1988), lit by the sunlight that crosses
     // the clouds nearer the sun beyond the gaps at the scaled extinction (their diffuse light leaves
     // them through the gaps' open sides); or the table's, of the particle alone.
-    float multiple = shading.light.y < 0.5 ? exp(-kScaledExtinctionShare * (column.x - column.z)) *
-                                                 deckMultipleScattering(column.z + opticalRadius * (1.0 + cosine), column.z + own + column.w, cosine)
-                                           : scaledDirect * scattered.y * perOpacity;
+    // Deck diffusion, solved slab: the same slab's light from deck diffusion's table, solved
+    // exactly by doubling and adding, for comparison.
+    float deckDepth = column.z + opticalRadius * (1.0 + cosine), deckTotal = column.z + own + column.w;
+    float deckLight = shading.light.y < 0.5 ? deckMultipleScattering(deckDepth, deckTotal, cosine) : solvedSlabMultipleScattering(deckDepth, deckTotal, cosine);
+    float multiple = abs(shading.light.y - 1.0) < 0.5 ? scaledDirect * scattered.y * perOpacity : exp(-kScaledExtinctionShare * (column.x - column.z)) * deckLight;
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);
     float3 radiance = sunLight * (single * perOpacity + multiple) + skyLight * ((0.6 + 0.4 * height) / kTablePi);

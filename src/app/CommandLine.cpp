@@ -255,6 +255,12 @@ constexpr OptionRow kOptions[] = {
      "(about a minute) into FILE and exit; the program reads\n"
      "media/clouds/particle-scattering.exr (tools/generate-cloud-scattering)",
      setPath<&Options::generateCloudScattering>},
+    {"Clouds", "--generate-deck-diffusion", "FILE", "table.exr",
+     "compute deck diffusion's table (the light scattered more than\n"
+     "once in a slab of cloud) on the CPU into FILE and exit; the\n"
+     "program reads media/clouds/deck-diffusion.exr\n"
+     "(tools/generate-cloud-scattering)",
+     setPath<&Options::generateDeckDiffusion>},
     {"Shaders", "--shader-dir", "DIR", "shaders", "compiled shaders (default: 'shaders' beside the program)", setPath<&Options::shaderDir>},
     {"Shaders", "--shader-source", "DIR", "src",
      "HLSL folder that F8 and file changes reload from\n"

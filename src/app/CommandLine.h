@@ -43,6 +43,7 @@ struct Options {
     std::optional<double> timeStep;
     std::optional<int> simulateDeviceLoss;              // after this frame (1-based), recover as from a removed device
     std::optional<std::filesystem::path> generateCloudScattering;  // compute the cloud particle's scattering table into this file and exit
+    std::optional<std::filesystem::path> generateDeckDiffusion;    // compute deck diffusion's table into this file and exit
     std::optional<std::filesystem::path> benchmark;     // a scenario file to run (implies headless)
     std::optional<std::filesystem::path> benchmarkOutput;  // the results' JSON (default benchmark-results.json)
     std::optional<std::filesystem::path> batch;       // a list of views to capture, or "-" for requests on standard input (implies headless)

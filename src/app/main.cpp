@@ -6,6 +6,7 @@
 #include "app/CommandLine.h"
 #include "app/FlightPath.h"
 #include "app/SoakSchedule.h"
+#include "clouds/DeckDiffusionTable.h"
 #include "clouds/ParticleScattering.h"
 #include "settings/State.h"
 #include "core/Error.h"
@@ -17,6 +18,8 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +32,23 @@ std::vector<std::string> commandLineArguments() {
     for (int i = 1; i < count; ++i) arguments.push_back(firmament::narrow(wide[i]));
     LocalFree(wide);
     return arguments;
+}
+
+// --generate-cloud-scattering and --generate-deck-diffusion: one of the clouds' tables computed on
+// the CPU with its progress logged, written to `path`; the exit code.
+int generateTable(const std::string& what, const std::string& progressName, const std::filesystem::path& path,
+                  const std::function<void(const std::function<void(double)>&, const std::filesystem::path&)>& make) {
+    using namespace firmament;
+    try {
+        log::info("clouds: computing " + what);
+        make([&](double progress) { log::info("clouds: " + progressName + " " + std::to_string(static_cast<int>(progress * 100.0 + 0.5)) + "%"); },
+             path);
+        log::info("clouds: wrote " + path.string());
+        return 0;
+    } catch (const Error& e) {
+        log::error(e.what());
+        return 1;
+    }
 }
 
 }  // namespace
@@ -49,19 +69,18 @@ int main() {
         return 0;
     }
     if (parsed.options.generateCloudScattering) {
-        try {
-            const ParticleScatteringParameters parameters;
-            log::info("clouds: computing the particle's scattering table: " + parameters.describe());
-            const ParticleScatteringTable table = computeParticleScattering(parameters, [](double progress) {
-                log::info("clouds: scattering table " + std::to_string(static_cast<int>(progress * 100.0 + 0.5)) + "%");
-            });
-            writeParticleScattering(*parsed.options.generateCloudScattering, table);
-            log::info("clouds: wrote " + parsed.options.generateCloudScattering->string());
-            return 0;
-        } catch (const Error& e) {
-            log::error(e.what());
-            return 1;
-        }
+        const ParticleScatteringParameters parameters;
+        return generateTable("the particle's scattering table: " + parameters.describe(), "scattering table", *parsed.options.generateCloudScattering,
+                             [&](const std::function<void(double)>& progress, const std::filesystem::path& path) {
+                                 writeParticleScattering(path, computeParticleScattering(parameters, progress));
+                             });
+    }
+    if (parsed.options.generateDeckDiffusion) {
+        const DeckDiffusionParameters parameters;
+        return generateTable("deck diffusion's table: " + parameters.describe(), "deck diffusion", *parsed.options.generateDeckDiffusion,
+                             [&](const std::function<void(double)>& progress, const std::filesystem::path& path) {
+                                 writeDeckDiffusion(path, computeDeckDiffusion(parameters, progress));
+                             });
     }
     State state;
     std::optional<FlightPath> flight;

@@ -41,11 +41,12 @@ inline constexpr std::array<std::string_view, 2> kCloudRendererNames{"Particles"
 
 // "Multiple scattering": the light scattered more than once, from deck diffusion through each
 // particle's deck along the sun, its column unbroken by clear air (delta-Eddington;
-// docs/clouds.md, "Deck diffusion"), or from the scattering table's multiple scattering of the
-// particle alone, dimmed by the delta-M scaled transmittance of the particles nearer the sun
-// (Yusov 2014's approach), for comparison.
-enum class MultipleScattering { DeckDiffusion, ParticleTable };
-inline constexpr std::array<std::string_view, 2> kMultipleScatteringNames{"Deck diffusion", "Particle table"};
+// docs/clouds.md, "Deck diffusion"); for comparison, from the scattering table's multiple
+// scattering of the particle alone, dimmed by the delta-M scaled transmittance of the particles
+// nearer the sun (Yusov 2014's approach), or from the same deck's slab solved exactly by doubling
+// and adding (deck diffusion's table), which measures further from the path-traced reference.
+enum class MultipleScattering { DeckDiffusion, ParticleTable, SolvedSlab };
+inline constexpr std::array<std::string_view, 3> kMultipleScatteringNames{"Deck diffusion", "Particle table", "Deck diffusion, solved slab"};
 
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with

@@ -165,6 +165,7 @@ void Clouds::update(FrameContext& frame, const CloudSettings& settings) {
     if (reference) reference_.buildIndex(frame, particles_, settings);
     if (settings.enabled && settings.showParticles == ParticleView::Off && tables) {
         scatteringTable(frame.device);
+        deckDiffusionTable(frame.device);
         if (settings.lightOcclusion && !reference) opacity_.compute(frame, particles_, tables->tables(), settings);
         else opacity_.clear(frame.device, frame.context, particles_.capacity());
         if (settings.shadows) shadowMap_.render(frame, particles_, tables->tables(), settings);
@@ -215,6 +216,20 @@ const Texture3D& Clouds::scatteringTable(ID3D11Device* device) {
     return scattering_;
 }
 
+const Texture3D& Clouds::deckDiffusionTable(ID3D11Device* device) {
+    if (deckDiffusion_.texture) return deckDiffusion_;
+    const std::filesystem::path path = storage_.mediaFolder / "clouds" / "deck-diffusion.exr";
+    const DeckDiffusionTable table = readDeckDiffusion(path, deckParameters_);
+    const DeckDiffusionParameters& p = table.parameters;
+    deckDiffusion_ = createTexture3D(device, p.cosines, p.depths, p.thicknesses, DXGI_FORMAT_R32_FLOAT, D3D11_BIND_SHADER_RESOURCE);
+    ComPtr<ID3D11DeviceContext> context;
+    device->GetImmediateContext(&context);
+    context->UpdateSubresource(deckDiffusion_.texture.Get(), 0, nullptr, table.multiple.data(), static_cast<UINT>(p.cosines * 4),
+                               static_cast<UINT>(p.cosines * p.depths * 4));
+    log::info("clouds: deck diffusion's table read from " + path.string());
+    return deckDiffusion_;
+}
+
 // Back to front, premultiplied alpha, no depth target: the pixel shader cuts each particle at the
 // scene's depth. At 1x straight over the frame; at 2x and 4x into the low-resolution target, cut
 // by its depth, then upsampled over the frame.
@@ -223,12 +238,16 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     const int downscale = settings.downscale;
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
+    const Texture3D& deck = deckDiffusionTable(frame.device);
     const AtmosphereBinding air = bindingOf(atmosphere);
     gpu::CloudShadingConstants c{};
     c.modes = air.modes;
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
                              static_cast<float>(scatteringParameters_.viewZeniths), static_cast<float>(scatteringParameters_.opticalRadii));
-    c.light = glm::vec4(static_cast<float>(scatteringParameters_.firstOpticalRadius), static_cast<float>(settings.multipleScattering), 0.0f, 0.0f);
+    c.light = glm::vec4(static_cast<float>(scatteringParameters_.firstOpticalRadius), static_cast<float>(settings.multipleScattering),
+                        static_cast<float>(deckParameters_.thinnest), 0.0f);
+    c.deck = glm::vec4(static_cast<float>(deckParameters_.cosines), static_cast<float>(deckParameters_.depths), static_cast<float>(deckParameters_.thicknesses),
+                       static_cast<float>(deckParameters_.thicknessesPerOctave));
     ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();
     ID3D11RenderTargetView* target = hdr;
     ID3D11ShaderResourceView* depth = frame.targets.depth().srv.Get();
@@ -263,11 +282,12 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         context->PSSetShaderResources(5, 5, air.tables.data());
         ID3D11ShaderResourceView* sunColumn = opacity_.sunColumn();
         context->PSSetShaderResources(10, 1, &sunColumn);
+        context->PSSetShaderResources(11, 1, deck.srv.GetAddressOf());
         ID3D11SamplerState* samplers[] = {linearWrap_.Get(), air.linearClamp};
         context->PSSetSamplers(0, 2, samplers);
         particles_.drawInstanced(frame, shadeVertexKey(air.model), shadePixelKey(air.model, blending), ParticleSet::InView, width, height);
-        ID3D11ShaderResourceView* none[9] = {};
-        context->PSSetShaderResources(2, 9, none);
+        ID3D11ShaderResourceView* none[10] = {};
+        context->PSSetShaderResources(2, 10, none);
     } while (blending_.firstBuildOverflowed(frame.device, context));
     pass.reset();
     if (blending != ParticleBlending::Alpha) {

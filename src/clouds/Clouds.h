@@ -7,6 +7,7 @@
 #include "clouds/CloudShadowMap.h"
 #include "clouds/LowResolution.h"
 #include "clouds/ParticleOpacity.h"
+#include "clouds/DeckDiffusionTable.h"
 #include "clouds/ParticleScattering.h"
 #include "clouds/ParticleTables.h"
 #include "clouds/VolumeBlendingPass.h"
@@ -77,6 +78,7 @@ private:
     // Renderer: Reference (path traced): the paths added and their mean over the frame.
     void drawReference(FrameContext& frame, const CloudSettings& settings, AtmosphereTables atmosphere);
     const Texture3D& scatteringTable(ID3D11Device* device);
+    const Texture3D& deckDiffusionTable(ID3D11Device* device);
 
     TableStorage storage_;
     CachedTables<ParticleTablePrecomputation> tables_;
@@ -87,6 +89,8 @@ private:
     ConstantBuffer<gpu::CloudShadingConstants> shadingConstants_;
     ParticleScatteringParameters scatteringParameters_;
     Texture3D scattering_;  // R32G32B32A32_FLOAT: single scattering (phase excluded), multiple, the forward peak's (phase excluded)
+    DeckDiffusionParameters deckParameters_;
+    Texture3D deckDiffusion_;  // R32_FLOAT: deck diffusion's light scattered more than once (cosine, depth, thickness)
     BlendingSupport blendingSupport_;
     VolumeBlendingPass blending_;
     CloudLowResolution lowResolution_;

@@ -35,4 +35,34 @@ double deckMultipleScattering(double depth, double total, double mu, double g) {
     return std::max(deckDiffuseRadiance(depth, total, mu, g) - deckSingleScattering(depth, total, mu, g), 0.0);
 }
 
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+DeckDiffusionCoordinates deckDiffusionCoordinates(const DeckDiffusionParameters& p, double depth, double total, double mu) {
+    DeckDiffusionCoordinates c;
+    c.x = (std::clamp(mu, -1.0, 1.0) + 1.0) * 0.5 * (p.cosines - 1);
+    const double share = total > 0.0 ? std::clamp(depth / total, 0.0, 1.0) : 0.0;
+    c.y = std::acos(1.0 - 2.0 * share) / kPi * (p.depths - 1);
+    const double octaves = std::log2(std::max(total, 1e-30) / p.thinnest);
+    c.z = std::clamp(octaves * p.thicknessesPerOctave, 0.0, p.thicknesses - 1.0);
+    if (total < p.thinnest) c.scale = (total / p.thinnest) * (total / p.thinnest);
+    return c;
+}
+
+double solvedSlabMultipleScattering(const DeckDiffusionTable& table, double depth, double total, double mu) {
+    const DeckDiffusionParameters& p = table.parameters;
+    const DeckDiffusionCoordinates c = deckDiffusionCoordinates(p, depth, total, mu);
+    const int x0 = std::min(static_cast<int>(c.x), p.cosines - 2), y0 = std::min(static_cast<int>(c.y), p.depths - 2),
+              z0 = std::min(static_cast<int>(c.z), p.thicknesses - 2);
+    const double wx = c.x - x0, wy = c.y - y0, wz = c.z - z0;
+    double sum = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const int dx = k & 1, dy = (k >> 1) & 1, dz = k >> 2;
+        const double w = (dx ? wx : 1.0 - wx) * (dy ? wy : 1.0 - wy) * (dz ? wz : 1.0 - wz);
+        sum += w * table.multiple[table.index(x0 + dx, y0 + dy, z0 + dz)];
+    }
+    return c.scale * sum;
+}
+
 }  // namespace firmament

@@ -5,7 +5,9 @@
 // along the sun's ray through a particle (the optical depth nearer the sun, its own, and the
 // depth beyond it, from the light-space walk) as such a slab, and shades the particle with the
 // diffuse radiance at its place in it. The CPU twin of clouds/particle_lighting.hlsli's
-// deckDiffuseRadiance().
+// deckDiffuseRadiance(). Beside it, the same slab solved exactly by doubling and adding
+// (src/clouds/DeckDiffusionTable.h), looked up as the GPU's sampler filters its table.
+#include "clouds/DeckDiffusionTable.h"
 
 namespace firmament {
 
@@ -34,5 +36,22 @@ double deckSingleScattering(double depth, double total, double mu, double g);
 // the scattering table, in the particle (Nakajima and Tanaka 1988: replace the approximate
 // solution's single scattering by an exact one).
 double deckMultipleScattering(double depth, double total, double mu, double g);
+
+// The table's coordinates in texels (node k at k), clamped to its nodes: x the cosine mu between
+// the light's travel and the sun's, y the depth's share of the slab through
+// acos(1 - 2 depth / total) / pi, z log2 of the thickness over the thinnest, times the nodes per
+// octave. A slab thinner than the table's thinnest is looked up at the thinnest and scaled by
+// (total / thinnest)^2, as light scattered twice grows in a thin slab (`scale`).
+struct DeckDiffusionCoordinates {
+    double x = 0.0, y = 0.0, z = 0.0, scale = 1.0;
+};
+DeckDiffusionCoordinates deckDiffusionCoordinates(const DeckDiffusionParameters& p, double depth, double total, double mu);
+
+// Multiple scattering: Deck diffusion, solved slab: the radiance scattered more than once (1/sr,
+// per unit sun irradiance across its rays) at optical depth `depth` of a slab of optical thickness
+// `total`, both along the sun's rays, travelling at cosine `mu` to the sun's light (1: straight
+// away from the sun; -1: back towards it), from the table (the CPU twin of
+// clouds/particle_lighting.hlsli's solvedSlabMultipleScattering()).
+double solvedSlabMultipleScattering(const DeckDiffusionTable& table, double depth, double total, double mu);
 
 }  // namespace firmament

@@ -142,7 +142,7 @@ TEST(CommandLine, TheOptionTableDrivesTheParserAndTheUsage) {
     EXPECT_EQ(listed, static_cast<int>(options.size()));
     for (const char* option : {"--warp", "--hardware", "--adapter", "--headless", "--frames", "--resolution", "--vsync",
                                "--capture", "--capture-ui", "--settings", "--set", "--state-file", "--shader-dir",
-                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering",
+                               "--shader-source", "--shader-compiler", "--benchmark", "--benchmark-output", "--generate-cloud-scattering", "--generate-deck-diffusion",
                                "--simulate-device-loss", "--time-step", "--batch", "--soak", "--soak-report", "--flight",
                                "--record-flight", "--export-luts", "--cache-dir", "--no-cache", "--version", "--help"})
         EXPECT_NE(usage.find(option), std::string::npos) << option;
@@ -169,6 +169,9 @@ TEST(CommandLine, CloudScatteringGenerator) {
     EXPECT_FALSE(parse({}).options.generateCloudScattering);
     expectError({"--generate-cloud-scattering"}, "--generate-cloud-scattering");
     expectError({"--generate-cloud-scattering", ""}, "empty");
+    EXPECT_EQ(parse({"--generate-deck-diffusion", "deck.exr"}).options.generateDeckDiffusion, std::filesystem::path("deck.exr"));
+    EXPECT_FALSE(parse({}).options.generateDeckDiffusion);
+    expectError({"--generate-deck-diffusion"}, "--generate-deck-diffusion");
 }
 
 // A benchmark runs headless on WARP (unless told otherwise) and takes its views and frame
