@@ -8,9 +8,11 @@
 // the renderer adds the light scattered into the forward peak and once more with the particle's
 // single scattering (clouds/shade_particles.hlsl). Orders 2 and on, solved by doubling and adding
 // (src/clouds/SlabDoubling.h); computed on the CPU by
-// `firmament --generate-deck-diffusion` and shipped as media/clouds/deck-diffusion.exr. The
-// particle renderer shades each particle with it at the particle's place in its deck
-// (clouds/particle_lighting.hlsli); src/reference/DeckDiffusion.h is the CPU twin of its look-up.
+// `firmament --generate-deck-diffusion` and shipped as media/clouds/deck-diffusion.exr. With
+// Multiple scattering: Deck diffusion, solved slab, the particle renderer shades each particle
+// with it at the particle's place in its deck instead of Eddington's radiance
+// (clouds/particle_lighting.hlsli), for comparison: it measures further from the path-traced
+// reference (docs/clouds.md). src/reference/DeckDiffusion.h is the CPU twin of its look-up.
 #include <filesystem>
 #include <functional>
 #include <string>
