@@ -104,7 +104,9 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     // Deck diffusion, solved slab: the same slab's light from deck diffusion's table, solved
     // exactly by doubling and adding, for comparison.
     float deckDepth = column.z + opticalRadius * (1.0 + cosine), deckTotal = column.z + own + column.w;
-    float deckLight = shading.light.y < 0.5 ? deckMultipleScattering(deckDepth, deckTotal, cosine) : solvedSlabMultipleScattering(deckDepth, deckTotal, cosine);
+    float deckLight;
+    [branch] if (shading.light.y < 0.5) deckLight = deckMultipleScattering(deckDepth, deckTotal, cosine);
+    else deckLight = solvedSlabMultipleScattering(deckDepth, deckTotal, cosine);
     float multiple = abs(shading.light.y - 1.0) < 0.5 ? scaledDirect * scattered.y * perOpacity : exp(-kScaledExtinctionShare * (column.x - column.z)) * deckLight;
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);

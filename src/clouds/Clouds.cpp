@@ -165,7 +165,7 @@ void Clouds::update(FrameContext& frame, const CloudSettings& settings) {
     if (reference) reference_.buildIndex(frame, particles_, settings);
     if (settings.enabled && settings.showParticles == ParticleView::Off && tables) {
         scatteringTable(frame.device);
-        deckDiffusionTable(frame.device);
+        if (settings.multipleScattering == MultipleScattering::SolvedSlab) deckDiffusionTable(frame.device);
         if (settings.lightOcclusion && !reference) opacity_.compute(frame, particles_, tables->tables(), settings);
         else opacity_.clear(frame.device, frame.context, particles_.capacity());
         if (settings.shadows) shadowMap_.render(frame, particles_, tables->tables(), settings);
@@ -238,7 +238,9 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     const int downscale = settings.downscale;
     ID3D11DeviceContext* context = frame.context;
     const Texture3D& scattering = scatteringTable(frame.device);
-    const Texture3D& deck = deckDiffusionTable(frame.device);
+    // Deck diffusion's table only where the comparison mode samples it; else nothing is bound.
+    ID3D11ShaderResourceView* deck =
+        settings.multipleScattering == MultipleScattering::SolvedSlab ? deckDiffusionTable(frame.device).srv.Get() : nullptr;
     const AtmosphereBinding air = bindingOf(atmosphere);
     gpu::CloudShadingConstants c{};
     c.modes = air.modes;
@@ -282,7 +284,7 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
         context->PSSetShaderResources(5, 5, air.tables.data());
         ID3D11ShaderResourceView* sunColumn = opacity_.sunColumn();
         context->PSSetShaderResources(10, 1, &sunColumn);
-        context->PSSetShaderResources(11, 1, deck.srv.GetAddressOf());
+        context->PSSetShaderResources(11, 1, &deck);
         ID3D11SamplerState* samplers[] = {linearWrap_.Get(), air.linearClamp};
         context->PSSetSamplers(0, 2, samplers);
         particles_.drawInstanced(frame, shadeVertexKey(air.model), shadePixelKey(air.model, blending), ParticleSet::InView, width, height);

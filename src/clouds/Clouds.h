@@ -90,7 +90,7 @@ private:
     ParticleScatteringParameters scatteringParameters_;
     Texture3D scattering_;  // R32G32B32A32_FLOAT: single scattering (phase excluded), multiple, the forward peak's (phase excluded)
     DeckDiffusionParameters deckParameters_;
-    Texture3D deckDiffusion_;  // R32_FLOAT: deck diffusion's light scattered more than once (cosine, depth, thickness)
+    Texture3D deckDiffusion_;  // R32_FLOAT: deck diffusion's light scattered more than once (cosine, depth, thickness); read when first chosen
     BlendingSupport blendingSupport_;
     VolumeBlendingPass blending_;
     CloudLowResolution lowResolution_;
