@@ -93,18 +93,19 @@ float deckMultipleScattering(float depth, float total, float mu) {
     return max(deckDiffuseRadiance(depth, total, mu) - deckSingleScattering(depth, total, mu), 0.0);
 }
 
-// Deck diffusion, solved slab (docs/clouds.md, "Deck diffusion"; src/clouds/DeckDiffusionTable.h):
-// the radiance scattered more than once (1/sr, per unit sun irradiance) at optical depth `depth` of a
-// slab of cloud of optical thickness `total` lit along its normal, both along the sun's rays,
-// travelling at cosine mu to the sun's light (1: away from the sun), from the table solved by
-// doubling and adding in the delta-M scaled medium (the same medium as deckDiffuseRadiance()'s). Node k of each axis at texel k: the cosine -1 + 2k / (cosines - 1), the
-// depth's share (1 - cos(pi k / (depths - 1))) / 2, the thickness thinnest x 2^(k / per octave);
-// a slab thinner than the thinnest scales as light scattered twice, by the thickness squared.
-// src/reference/DeckDiffusion.h's solvedSlabMultipleScattering() is the CPU twin.
+// Deck diffusion, solved slab (the default; docs/clouds.md, "Deck diffusion"; src/clouds/
+// DeckDiffusionTable.h): the radiance scattered more than once (1/sr, per unit sun irradiance) at
+// optical depth `depth` of a slab of cloud of optical thickness `total` lit along its normal, both
+// along the sun's rays, travelling at cosine mu to the sun's light (1: away from the sun), from
+// the table solved by doubling and adding in the droplets' own medium (g = 0.9; no delta-Eddington
+// scaling). Node k of each axis at texel k: the cosine -cos(pi k / (cosines - 1)) (even steps in
+// angle), the depth's share (1 - cos(pi k / (depths - 1))) / 2, the thickness thinnest x
+// 2^(k / per octave); a slab thinner than the thinnest scales as light scattered twice, by the
+// thickness squared. src/reference/DeckDiffusion.h's solvedSlabMultipleScattering() is the CPU twin.
 float solvedSlabMultipleScattering(float depth, float total, float mu) {
     float4 n = shading.deck;
     float thinnest = shading.light.z;
-    float x = (clamp(mu, -1.0, 1.0) + 1.0) * 0.5 * (n.x - 1.0);
+    float x = acos(-clamp(mu, -1.0, 1.0)) / kTablePi * (n.x - 1.0);
     float share = total > 0.0 ? saturate(depth / total) : 0.0;
     float y = acos(1.0 - 2.0 * share) / kTablePi * (n.y - 1.0);
     float z = clamp(log2(max(total, 1e-30) / thinnest) * n.w, 0.0, n.z - 1.0);

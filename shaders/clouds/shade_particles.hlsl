@@ -10,11 +10,12 @@
 //    2020's transmittance table and Firmament's sky irradiance table for his model).
 //  - The particle's radiance: single scattering from the scattering table's sphere of the
 //    particle's optical radius, at the view ray's entry point and direction against the sun,
-//    times the Henyey-Greenstein phase function for the actual angle, lit by the direct sunlight
-//    through the particles nearer the sun (clouds/particle_opacity.hlsl) at the delta-M scaled
-//    extinction; multiple scattering by deck diffusion through the particle's deck along the sun
-//    (its column unbroken by clear air; Eddington's, or the slab solved exactly), or (Multiple
-//    scattering: Particle table) the table's;
+//    times the Henyey-Greenstein phase function for the actual angle, lit by the sunlight through
+//    the particles nearer the sun (clouds/particle_opacity.hlsl); multiple scattering by deck
+//    diffusion through the particle's deck along the sun (its column unbroken by clear air): by
+//    default the slab of the droplets' own medium solved by doubling and adding (Deck diffusion,
+//    solved slab), or Eddington's in the delta-M scaled medium (Deck diffusion), or (Particle
+//    table) the table's, of the particle alone;
 //    plus the ambient light scattered by a white cloud (E_sky / pi, brighter at the particle's
 //    top).
 //  - Aerial perspective: over the stretch from the camera to where the ray enters the particle,
@@ -88,26 +89,33 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     float3 l = normalize(float3(dot(sun, hit.tangent) / hit.scale.x, dot(sun, hit.normal) / hit.scale.y, dot(sun, hit.bitangent) / hit.scale.z));
     float3 scattered = particleScattering(hit.entry, hit.through, l, opticalRadius);
     float perOpacity = 1.0 / max(1.0 - exp(-2.0 * opticalRadius * saturate(dot(-hit.entry, hit.through))), 1e-4);
-    // Single scattering: the unscattered sunlight with the droplets' phase function, sharp
-    // forward peak and all; the light scattered into the forward peak (on the way in, x's share
-    // of the scaled first order, or inside the particle, z) with the scaled medium's broader one.
+    // The particle's place in its deck along the sun (the column's part unbroken by clear air),
+    // at its face towards the camera (mu = 1 looks at the face away from the sun); the sunlight
+    // that reaches the deck crosses the clouds nearer the sun beyond the gaps at the scaled
+    // extinction (their diffuse light leaves them through the gaps' open sides).
     float cosine = dot(direction, sun);
-    float scaledAsymmetry = kDropletAsymmetry / (1.0 + kDropletAsymmetry);
-    float peak = henyeyGreenstein(cosine, scaledAsymmetry);
-    float single = direct * (scattered.x * henyeyGreenstein(cosine, kDropletAsymmetry) + scattered.z * peak) +
-                   (scaledDirect - direct) * (kScaledExtinctionShare * scattered.x + scattered.z) * peak;
-    // Multiple scattering: deck diffusion at the particle's face towards the camera, in the slab
-    // of its deck (the column's part unbroken by clear air; mu = 1 looks at the face away from the
-    // sun), less its single scattering (Nakajima and Tanaka 1988), lit by the sunlight that crosses
-    // the clouds nearer the sun beyond the gaps at the scaled extinction (their diffuse light leaves
-    // them through the gaps' open sides); or the table's, of the particle alone.
-    // Deck diffusion, solved slab: the same slab's light from deck diffusion's table, solved
-    // exactly by doubling and adding, for comparison.
     float deckDepth = column.z + opticalRadius * (1.0 + cosine), deckTotal = column.z + own + column.w;
-    float deckLight;
-    [branch] if (shading.light.y < 0.5) deckLight = deckMultipleScattering(deckDepth, deckTotal, cosine);
-    else deckLight = solvedSlabMultipleScattering(deckDepth, deckTotal, cosine);
-    float multiple = abs(shading.light.y - 1.0) < 0.5 ? scaledDirect * scattered.y * perOpacity : exp(-kScaledExtinctionShare * (column.x - column.z)) * deckLight;
+    float deckBeam = exp(-kScaledExtinctionShare * (column.x - column.z));
+    float single, multiple;
+    [branch] if (shading.light.y > 1.5) {
+        // Deck diffusion, solved slab (the default), in the droplets' own medium: single
+        // scattering of the beam that reaches the particle through its deck, with the droplets'
+        // phase function, sharp forward peak and all; every later order, the forward peak's
+        // included, from deck diffusion's table (less its single scattering: Nakajima and
+        // Tanaka 1988).
+        single = deckBeam * exp(-column.z) * scattered.x * henyeyGreenstein(cosine, kDropletAsymmetry);
+        multiple = deckBeam * solvedSlabMultipleScattering(deckDepth, deckTotal, cosine);
+    } else {
+        // The delta-M scaled medium's: single scattering of the unscattered sunlight with the
+        // droplets' phase function; the light scattered into the forward peak (on the way in, x's
+        // share of the scaled first order, or inside the particle, z) with the scaled medium's
+        // broader one. Multiple scattering: Eddington's deck diffusion less its single scattering,
+        // or (Particle table) the table's, of the particle alone.
+        float peak = henyeyGreenstein(cosine, kDropletAsymmetry / (1.0 + kDropletAsymmetry));
+        single = direct * (scattered.x * henyeyGreenstein(cosine, kDropletAsymmetry) + scattered.z * peak) +
+                 (scaledDirect - direct) * (kScaledExtinctionShare * scattered.x + scattered.z) * peak;
+        multiple = shading.light.y > 0.5 ? scaledDirect * scattered.y * perOpacity : deckBeam * deckMultipleScattering(deckDepth, deckTotal, cosine);
+    }
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);
     float3 radiance = sunLight * (single * perOpacity + multiple) + skyLight * ((0.6 + 0.4 * height) / kTablePi);

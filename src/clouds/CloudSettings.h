@@ -40,11 +40,12 @@ enum class CloudRenderer { Particles, PathTracedReference };
 inline constexpr std::array<std::string_view, 2> kCloudRendererNames{"Particles", "Reference (path traced)"};
 
 // "Multiple scattering": the light scattered more than once, from deck diffusion through each
-// particle's deck along the sun, its column unbroken by clear air (delta-Eddington;
-// docs/clouds.md, "Deck diffusion"); for comparison, from the scattering table's multiple
-// scattering of the particle alone, dimmed by the delta-M scaled transmittance of the particles
-// nearer the sun (Yusov 2014's approach), or from the same deck's slab solved exactly by doubling
-// and adding (deck diffusion's table), which measures further from the path-traced reference.
+// particle's deck along the sun, its column unbroken by clear air (docs/clouds.md, "Deck
+// diffusion"): by default the slab of the droplets' own medium solved by doubling and adding
+// (deck diffusion's table; Deck diffusion, solved slab); for comparison, Eddington's radiance in
+// the delta-M scaled medium (Deck diffusion), or the scattering table's multiple scattering of
+// the particle alone, dimmed by the delta-M scaled transmittance of the particles nearer the sun
+// (Particle table, Yusov 2014's approach).
 enum class MultipleScattering { DeckDiffusion, ParticleTable, SolvedSlab };
 inline constexpr std::array<std::string_view, 3> kMultipleScatteringNames{"Deck diffusion", "Particle table", "Deck diffusion, solved slab"};
 
@@ -73,7 +74,7 @@ struct CloudSettings {
     // "Light occlusion": each particle lit through the particles nearer the sun (light-space
     // tiling, Yusov 2014); off, every particle sees the sun unoccluded, as in part 1.
     bool lightOcclusion = true;
-    MultipleScattering multipleScattering = MultipleScattering::DeckDiffusion;  // "Multiple scattering"
+    MultipleScattering multipleScattering = MultipleScattering::SolvedSlab;  // "Multiple scattering"
     // "Opacity early exit": a particle's walk along the sun stops once the column it has found is
     // 256 thick (kOpacityEarlyExitDepth, src/clouds/LightSpace.h; Yusov 2014 stops once the sun's
     // transmittance is below 0.01); off, it walks the tile's whole list.

@@ -14,19 +14,15 @@ namespace firmament {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kFileFormat = 1;  // raise when the file's layout changes
+constexpr int kFileFormat = 2;  // raise when the file's layout or medium changes (2: the droplets' own phase function, cosines even in angle)
 
-// The droplets' delta-M scaled medium: the solver's asymmetry g / (1 + g) = (g - g^2) / (1 - g^2),
-// and the share of each optical depth that it sees, 1 - g^2.
-double scaledAsymmetry(const DeckDiffusionParameters& p) { return p.asymmetry / (1.0 + p.asymmetry); }
-double scaledShare(const DeckDiffusionParameters& p) { return 1.0 - p.asymmetry * p.asymmetry; }
 }  // namespace
 
 double DeckDiffusionParameters::thickness(int k) const { return thinnest * std::exp2(static_cast<double>(k) / thicknessesPerOctave); }
 
 double DeckDiffusionParameters::depthShare(int k) const { return 0.5 * (1.0 - std::cos(kPi * k / (depths - 1))); }
 
-double DeckDiffusionParameters::cosine(int k) const { return -1.0 + 2.0 * k / (cosines - 1); }
+double DeckDiffusionParameters::cosine(int k) const { return -std::cos(kPi * k / (cosines - 1)); }
 
 std::string DeckDiffusionParameters::describe() const {
     char text[320];
@@ -38,9 +34,8 @@ std::string DeckDiffusionParameters::describe() const {
 }
 
 double solveDeckMultipleScattering(const DeckDiffusionParameters& p, int gaussPerHemisphere, double depth, double total, double mu) {
-    const SlabDoubling slab(scaledAsymmetry(p), gaussPerHemisphere, {std::max(std::abs(mu), 1e-3)});
-    const double share = scaledShare(p);
-    const SlabDoubling::Field field = slab.diffuse(share * depth, share * total), once = slab.singleScattering(share * depth, share * total);
+    const SlabDoubling slab(p.asymmetry, gaussPerHemisphere, {std::max(std::abs(mu), 1e-3)});
+    const SlabDoubling::Field field = slab.diffuse(depth, total), once = slab.singleScattering(depth, total);
     const size_t i = slab.cosines().size() - 1;
     return std::max(mu > 0.0 ? field.down[i] - once.down[i] : field.up[i] - once.up[i], 0.0);
 }
@@ -49,11 +44,11 @@ DeckDiffusionTable computeDeckDiffusion(const DeckDiffusionParameters& p, const 
     if (p.cosines % 2 != 0 || p.cosines < 2 || p.depths < 2 || p.thicknesses < 2 || p.thicknessesPerOctave < 1)
         throw Error("deck diffusion: the table needs an even count of cosines, two depths and two thicknesses at least");
     // The table's directions ride along as zero-weight directions: the magnitudes of its cosines,
-    // each hemisphere's in the same order (|mu_k| = |2k - (M - 1)| / (M - 1)).
+    // each hemisphere's in the same order (|mu_k| = |mu_(M - 1 - k)| = cos(pi j / (M - 1)), j the
+    // nearer of k and M - 1 - k).
     std::vector<double> magnitudes;
-    for (int j = 0; j < p.cosines / 2; ++j) magnitudes.push_back((2.0 * j + 1.0) / (p.cosines - 1));
-    const SlabDoubling slab(scaledAsymmetry(p), p.gaussPerHemisphere, magnitudes);
-    const double share = scaledShare(p);
+    for (int j = 0; j < p.cosines / 2; ++j) magnitudes.push_back(std::cos(kPi * j / (p.cosines - 1)));
+    const SlabDoubling slab(p.asymmetry, p.gaussPerHemisphere, magnitudes);
     const size_t first = slab.cosines().size() - magnitudes.size();
 
     DeckDiffusionTable table;
@@ -61,7 +56,7 @@ DeckDiffusionTable computeDeckDiffusion(const DeckDiffusionParameters& p, const 
     table.multiple.assign(static_cast<size_t>(p.cosines) * p.depths * p.thicknesses, 0.0f);
     for (int t = 0; t < p.thicknesses; ++t) {
         if (onlyThickness >= 0 && t != onlyThickness) continue;
-        const double total = share * p.thickness(t);
+        const double total = p.thickness(t);
         // The depths are symmetric about the middle: the layer above depth k is the one below
         // depth (depths - 1 - k).
         std::vector<SlabDoubling::Layer> layers;
@@ -71,7 +66,7 @@ DeckDiffusionTable computeDeckDiffusion(const DeckDiffusionParameters& p, const 
             const SlabDoubling::Field field = slab.between(layers[static_cast<size_t>(d)], layers[static_cast<size_t>(p.depths - 1 - d)]);
             const SlabDoubling::Field once = slab.singleScattering(depth, total);
             for (int c = 0; c < p.cosines; ++c) {
-                const int j = std::abs(2 * c - (p.cosines - 1)) / 2;
+                const int j = std::min(c, p.cosines - 1 - c);
                 const size_t i = first + static_cast<size_t>(j);
                 const double multiple = p.cosine(c) > 0.0 ? field.down[i] - once.down[i] : field.up[i] - once.up[i];
                 table.multiple[table.index(c, d, t)] = static_cast<float>(std::max(multiple, 0.0));
@@ -96,13 +91,13 @@ void writeDeckDiffusion(const std::filesystem::path& path, const DeckDiffusionTa
     a["firmament.lut.formatVersion"] = kFileFormat;
     a["firmament.lut.name"] = std::string(
         "deck diffusion: the radiance scattered more than once inside a plane-parallel slab of cloud (albedo 1, Henyey-Greenstein) lit by "
-        "the sun along its normal, per unit sun irradiance (1/sr), by doubling and adding in the droplets' delta-M scaled medium (optical "
-        "depths times 1 - g^2, asymmetry g / (1 + g)). R: the light; G, B, A: 0");
+        "the sun along its normal, per unit sun irradiance (1/sr), by doubling and adding in the droplets' own medium (Henyey-Greenstein "
+        "g, delta-M truncated only at the solver's order). R: the light; G, B, A: 0");
     a["firmament.lut.dimensions"] = p.describe();
     a["firmament.lut.parameterization"] = std::string(
-        "x: the cosine mu = -1 + 2x / (width - 1) between the light's travel and the sun's; y within a tile: the depth's share of the "
-        "thickness (1 - cos(pi y / (depths - 1))) / 2 from the lit face; tile k: the optical thickness thinnest x 2^(k / per octave), "
-        "before the scaling");
+        "x: the cosine mu = -cos(pi x / (width - 1)) between the light's travel and the sun's (even steps in angle); y within a tile: "
+        "the depth's share of the thickness (1 - cos(pi y / (depths - 1))) / 2 from the lit face; tile k: the optical thickness "
+        "thinnest x 2^(k / per octave)");
     a["firmament.lut.layout"] = std::string("one tile of cosine x depth per thickness, one above the other, the thinnest at the top");
     a["firmament.lut.generator"] = std::string("firmament --generate-deck-diffusion <file> (tools/generate-cloud-scattering)");
     writeExr(path, image, a);

@@ -41,7 +41,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 DeckDiffusionCoordinates deckDiffusionCoordinates(const DeckDiffusionParameters& p, double depth, double total, double mu) {
     DeckDiffusionCoordinates c;
-    c.x = (std::clamp(mu, -1.0, 1.0) + 1.0) * 0.5 * (p.cosines - 1);
+    c.x = std::acos(-std::clamp(mu, -1.0, 1.0)) / kPi * (p.cosines - 1);
     const double share = total > 0.0 ? std::clamp(depth / total, 0.0, 1.0) : 0.0;
     c.y = std::acos(1.0 - 2.0 * share) / kPi * (p.depths - 1);
     const double octaves = std::log2(std::max(total, 1e-30) / p.thinnest);

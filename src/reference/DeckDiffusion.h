@@ -5,8 +5,8 @@
 // along the sun's ray through a particle (the optical depth nearer the sun, its own, and the
 // depth beyond it, from the light-space walk) as such a slab, and shades the particle with the
 // diffuse radiance at its place in it. The CPU twin of clouds/particle_lighting.hlsli's
-// deckDiffuseRadiance(). Beside it, the same slab solved exactly by doubling and adding
-// (src/clouds/DeckDiffusionTable.h), looked up as the GPU's sampler filters its table.
+// deckDiffuseRadiance(). Beside it, the slab of the droplets' own medium solved by doubling and
+// adding (src/clouds/DeckDiffusionTable.h), looked up as the GPU's sampler filters its table.
 #include "clouds/DeckDiffusionTable.h"
 
 namespace firmament {
@@ -37,10 +37,10 @@ double deckSingleScattering(double depth, double total, double mu, double g);
 // solution's single scattering by an exact one).
 double deckMultipleScattering(double depth, double total, double mu, double g);
 
-// The table's coordinates in texels (node k at k), clamped to its nodes: x the cosine mu between
-// the light's travel and the sun's, y the depth's share of the slab through
-// acos(1 - 2 depth / total) / pi, z log2 of the thickness over the thinnest, times the nodes per
-// octave. A slab thinner than the table's thinnest is looked up at the thinnest and scaled by
+// The table's coordinates in texels (node k at k), clamped to its nodes: x acos(-mu) / pi of the
+// cosine mu between the light's travel and the sun's (node k at mu = -cos(pi k / (cosines - 1))),
+// y the depth's share of the slab through acos(1 - 2 depth / total) / pi, z log2 of the
+// thickness over the thinnest, times the nodes per octave. A slab thinner than the table's thinnest is looked up at the thinnest and scaled by
 // (total / thinnest)^2, as light scattered twice grows in a thin slab (`scale`).
 struct DeckDiffusionCoordinates {
     double x = 0.0, y = 0.0, z = 0.0, scale = 1.0;

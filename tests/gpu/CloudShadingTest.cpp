@@ -168,7 +168,7 @@ TEST_F(CloudShadingTest, TheShadersLookUpBothTablesAsTheCpuDoes) {
     EXPECT_LT(densityError / count, 0.005);
     EXPECT_LT(worstDensity, 0.05);
     EXPECT_LT(worstDeck, 1e-3);  // measured 7.6e-5 (single precision)
-    EXPECT_LT(worstSlab, 1e-3);  // measured 1.0e-4 (the sampler's filtering)
+    EXPECT_LT(worstSlab, 5e-3);  // measured 9.8e-4: the sampler's 8-bit filter weights across the droplets' medium's steep forward peak
 }
 
 }  // namespace

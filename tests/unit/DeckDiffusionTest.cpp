@@ -81,14 +81,17 @@ TEST(DeckDiffusion, TheLookUpFollowsTheSolverBetweenItsNodes) {
         sum += error;
     }
     std::printf("look-up against the solver: mean error %.4f, worst %.4f\n", sum / count, worst);
-    // Measured: mean 0.56%, worst 2.8%.
-    EXPECT_LT(sum / count, 0.01);
-    EXPECT_LT(worst, 0.05);
+    // Measured: mean 1.5%, worst 8.3%, the worst in slabs thinner than 4 where the light is below
+    // a hundredth of a thick slab's and, in the droplets' own medium, peaked about the sun's rays
+    // (the delta-Eddington scaled table's were 0.56% and 2.8%).
+    EXPECT_LT(sum / count, 0.02);
+    EXPECT_LT(worst, 0.1);
 }
 
-// The table's 32 streams against 64: the light scattered more than once changes by nothing
-// visible against its own scale (0.01, a thirtieth of a thick slab's): measured below 1e-4, since
-// the scaled medium's phase function (g' = 0.47) is smooth.
+// The table's 32 streams against 64: the light scattered more than once changes little against
+// its own scale (0.01, a thirtieth of a thick slab's): measured 2.0%, as 64 streams resolve more of
+// the droplets' forward peak (truncated at g^64 = 0.001 instead of g^32 = 0.034). (In the
+// delta-Eddington scaled medium, g' = 0.47, it was below 1e-4.)
 TEST(DeckDiffusion, TwiceTheStreamsChangeLittle) {
     const DeckDiffusionParameters p;
     double worst = 0.0;
@@ -99,7 +102,7 @@ TEST(DeckDiffusion, TwiceTheStreamsChangeLittle) {
                 worst = std::max(worst, std::abs(a - b) / (b + 0.01));
             }
     std::printf("32 streams against 64: worst %.4f\n", worst);
-    EXPECT_LT(worst, 0.005);
+    EXPECT_LT(worst, 0.03);
 }
 
 }  // namespace
