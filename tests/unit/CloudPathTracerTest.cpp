@@ -357,8 +357,9 @@ glm::dvec3 layeredTexel(const ParticleScatteringTable& table, glm::ivec3 texel, 
 }
 
 // An isolated particle as the particle renderer shades it (shaders/clouds/shade_particles.hlsl,
-// without the atmosphere and the sky): the table's layers at the particle's optical radius, at
-// the view ray's entry point and direction: single scattering times the droplets' phase function,
+// without the atmosphere and the sky), with Multiple scattering: Particle table (and beside it
+// the default, Deck diffusion, solved slab): the table's layers at the particle's optical
+// radius, at the view ray's entry point and direction: single scattering times the droplets' phase function,
 // the forward peak's light times the scaled medium's, plus multiple scattering, per unit opacity
 // of the sphere's chord, times the particle's opacity
 // 1 - e^(-tau) along the ray (the same, for a homogeneous sphere); against the path-traced light
@@ -376,28 +377,44 @@ TEST(CloudPathTracer, AShadedParticleAgainstThePathTracedSphereAtThreeOpticalRad
     const glm::ivec3 texels[] = {glm::ivec3(2, 10, 3),  glm::ivec3(10, 40, 8), glm::ivec3(16, 5, 12), glm::ivec3(24, 20, 2), glm::ivec3(20, 33, 6),
                                  glm::ivec3(31, 10, 0), glm::ivec3(29, 40, 1), glm::ivec3(27, 32, 2), glm::ivec3(30, 20, 3), glm::ivec3(28, 33, 0)};
     const double scaledG = p.asymmetry / (1.0 + p.asymmetry);
+    const DeckDiffusionTable deck = readDeckDiffusion(test::executableFolder() / "media" / "clouds" / "deck-diffusion.exr", DeckDiffusionParameters{});
     for (const double tau : {14.0, 4.2, 0.98}) {
         const HomogeneousSphere sphere(glm::dvec3(0.0), 1.0, tau);
         const CloudPathTracer tracer(sphere, lighting, CloudPathSettings{});
-        double sumRenderer = 0.0, sumTraced = 0.0;
+        double sumRenderer = 0.0, sumSlab = 0.0, sumTraced = 0.0;
         for (const glm::ivec3 texel : texels) {
             const SurfaceRay ray = scatteringTexelRay(p, texel.x, texel.y, texel.z);
             const glm::dvec3 light = layeredTexel(table, texel, tau);
             const double cosine = glm::dot(lighting.toSun, ray.direction);
             const double renderer = light.x * henyeyGreensteinPhase(cosine, p.asymmetry) + light.z * henyeyGreensteinPhase(cosine, scaledG) + light.y;
+            // The default shading (Deck diffusion, solved slab) of a particle alone: single
+            // scattering with the droplets' phase function, and the slab of its own chord along
+            // the sun (2 tau) at its face toward the camera, times the opacity of the ray's chord.
+            const double opacity = 1.0 - std::exp(-2.0 * tau * std::max(glm::dot(-ray.entry, ray.direction), 0.0));
+            const double slab = light.x * henyeyGreensteinPhase(cosine, p.asymmetry) +
+                                opacity * solvedSlabMultipleScattering(deck, tau * (1.0 + cosine), 2.0 * tau, cosine);
             const double traced = tracer.meanRadiance({ray.entry - ray.direction * 0.01, ray.direction}, 20000, random).x;
             sumRenderer += renderer;
+            sumSlab += slab;
             sumTraced += traced;
         }
-        std::printf("optical radius %.2f: the particle renderer / the path-traced sphere over %zu texels: %.3f\n", tau, std::size(texels),
-                    sumRenderer / sumTraced);
-        // Measured: 1.08, 0.53 and 0.54. Near the sun's direction the thinner spheres get half
-        // their light: light scattered into the forward peak and once more is given the scaled
-        // medium's broad phase function, where the path tracer keeps some of the peak. (The
-        // scaled first order with the droplets' sharp phase function instead, Nakajima and
-        // Tanaka's correction, gave 9 to 28 times the light at the texels nearest the sun.)
+        std::printf("optical radius %.2f: the particle renderer / the path-traced sphere over %zu texels: %.3f (Particle table), %.3f (the "
+                    "default, Deck diffusion, solved slab)\n",
+                    tau, std::size(texels), sumRenderer / sumTraced, sumSlab / sumTraced);
+        // Particle table's, measured 1.08, 0.53 and 0.54. Near the sun's direction the thinner
+        // spheres get half their light: light scattered into the forward peak and once more is
+        // given the scaled medium's broad phase function, where the path tracer keeps some of the
+        // peak. (The scaled first order with the droplets' sharp phase function instead, Nakajima
+        // and Tanaka's correction, gave 9 to 28 times the light at the texels nearest the sun.)
         EXPECT_GT(sumRenderer / sumTraced, 0.45) << "optical radius " << tau;
         EXPECT_LT(sumRenderer / sumTraced, 1.25) << "optical radius " << tau;
+        // The default's, measured 2.50, 1.27 and 0.92 (the portable build's random stream: 2.40,
+        // 1.26, 0.91): a particle alone is no slab along the sun; its light leaves through its
+        // sides, the more the thicker it is (docs/clouds.md, "Deck diffusion": the isolated
+        // sphere). In a cloud a particle is one of many and its deck is the column's; held here
+        // so that a change to either model shows.
+        EXPECT_GT(sumSlab / sumTraced, 0.6) << "optical radius " << tau;
+        EXPECT_LT(sumSlab / sumTraced, 3.0) << "optical radius " << tau;
     }
 }
 
