@@ -14,8 +14,9 @@ namespace firmament {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kFileFormat = 2;  // raise when the file's layout or medium changes (2: the droplets' own phase function, cosines even in angle)
-
+// Raise when the file's layout or medium changes (2: the droplets' own phase function, cosines
+// even in angle).
+constexpr int kFileFormat = 2;
 }  // namespace
 
 double DeckDiffusionParameters::thickness(int k) const { return thinnest * std::exp2(static_cast<double>(k) / thicknessesPerOctave); }

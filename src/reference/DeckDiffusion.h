@@ -40,8 +40,9 @@ double deckMultipleScattering(double depth, double total, double mu, double g);
 // The table's coordinates in texels (node k at k), clamped to its nodes: x acos(-mu) / pi of the
 // cosine mu between the light's travel and the sun's (node k at mu = -cos(pi k / (cosines - 1))),
 // y the depth's share of the slab through acos(1 - 2 depth / total) / pi, z log2 of the
-// thickness over the thinnest, times the nodes per octave. A slab thinner than the table's thinnest is looked up at the thinnest and scaled by
-// (total / thinnest)^2, as light scattered twice grows in a thin slab (`scale`).
+// thickness over the thinnest, times the nodes per octave. A slab thinner than the table's
+// thinnest is looked up at the thinnest and scaled by (total / thinnest)^2, as light scattered
+// twice grows in a thin slab (`scale`).
 struct DeckDiffusionCoordinates {
     double x = 0.0, y = 0.0, z = 0.0, scale = 1.0;
 };
