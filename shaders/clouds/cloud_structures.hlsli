@@ -41,7 +41,7 @@ FIRMAMENT_CONSTANT_BUFFER(ParticleTableConstants);
 struct CloudShadingConstants {
     uint4 modes;       // x: single scattering mode, y: multiple scattering mode, z: integration steps (the atmosphere's); w: unused
     float4 scattering; // the particle scattering table's texels: x entry angles, y view azimuths, z view zeniths; w: optical radii (layers)
-    float4 light;      // x: the scattering table's first optical radius (each next layer doubles it); y: Multiple scattering (0 deck diffusion, 1 the particle table, 2 deck diffusion's solved slab); z: the solved slab table's thinnest slab; w: unused
+    float4 light;      // x: the scattering table's first optical radius (each next layer doubles it); y: Multiple scattering (0 deck diffusion, 1 the particle table, 2 deck diffusion's solved slab); z: the solved slab table's thinnest slab; w: Light terms (0 all, 1 the sun's scattered once, 2 more than once, 3 the sky's, 4 none)
     float4 deck;       // deck diffusion's solved slab table (src/clouds/DeckDiffusionTable.h): x cosines, y depths, z thicknesses, w thicknesses per octave
     uint4 blending;    // x: the per-pixel lists' node capacity, y: the row of their counters (clouds/fragment_lists.hlsli); zw: unused
     float4 target;     // the clouds' target (the frame's, or its low-resolution one): width, height, 1 / width, 1 / height

@@ -118,7 +118,14 @@ bool shadeFragment(ShapeVertex input, out ParticleFragment fragment) {
     }
     // Ambient: the sky's light scattered by a white cloud, more at its top than at its base.
     float height = clamp(hit.entry.y, -1.0, 1.0);
-    float3 radiance = sunLight * (single * perOpacity + multiple) + skyLight * ((0.6 + 0.4 * height) / kTablePi);
+    float3 ambient = skyLight * ((0.6 + 0.4 * height) / kTablePi);
+    float3 radiance = sunLight * (single * perOpacity + multiple) + ambient;
+    // Light terms (a study, not the default): one term alone, or none; the opacity and the aerial
+    // perspective below are the same in every choice.
+    [branch] if (shading.light.w > 0.5) {
+        float term = shading.light.w;
+        radiance = term < 1.5 ? sunLight * (single * perOpacity) : term < 2.5 ? sunLight * multiple : term < 3.5 ? ambient : float3(0.0, 0.0, 0.0);
+    }
 
     // Through the atmosphere from the camera to where the ray enters the particle.
     float3 transmittance, inscattered;

@@ -49,6 +49,15 @@ inline constexpr std::array<std::string_view, 2> kCloudRendererNames{"Particles"
 enum class MultipleScattering { DeckDiffusion, ParticleTable, SolvedSlab };
 inline constexpr std::array<std::string_view, 3> kMultipleScatteringNames{"Deck diffusion", "Particle table", "Deck diffusion, solved slab"};
 
+// "Light terms": the particles' light, or one of its terms alone, the others taken out (a study of
+// where a cloud's light comes from; docs/clouds.md, "Against the reference"): the sunlight
+// scattered once, the sunlight scattered more than once, the sky's light, or none (the clouds'
+// opacity alone, black in the haze in front of them). The aerial perspective and the blending
+// are the same in every choice, so the three terms add up to the whole plus twice None.
+enum class CloudLightTerms { All, SunOnce, SunMoreThanOnce, Sky, None };
+inline constexpr std::array<std::string_view, 5> kCloudLightTermsNames{"All", "Sun, scattered once", "Sun, scattered more than once", "Sky",
+                                                                       "None"};
+
 struct CloudSettings {
     // "Enable clouds": the particles shaded from their tables and blended over the scene (with
     // either atmosphere model drawn alone).
@@ -75,6 +84,7 @@ struct CloudSettings {
     // tiling, Yusov 2014); off, every particle sees the sun unoccluded, as in part 1.
     bool lightOcclusion = true;
     MultipleScattering multipleScattering = MultipleScattering::SolvedSlab;  // "Multiple scattering"
+    CloudLightTerms lightTerms = CloudLightTerms::All;  // "Light terms"
     // "Opacity early exit": a particle's walk along the sun stops once the column it has found is
     // 256 thick (kOpacityEarlyExitDepth, src/clouds/LightSpace.h; Yusov 2014 stops once the sun's
     // transmittance is below 0.01); off, it walks the tile's whole list.
@@ -120,6 +130,7 @@ struct CloudSettings {
         v.powerOfTwoChoice("downscale", downscale, 1, kCloudDownscaleNames, "Downscale");
         v.field("lightOcclusion", lightOcclusion, "Light occlusion");
         v.choice("multipleScattering", multipleScattering, kMultipleScatteringNames, "Multiple scattering");
+        v.choice("lightTerms", lightTerms, kCloudLightTermsNames, "Light terms");
         v.powerOfTwoChoice("lightSpaceResolution", lightSpaceResolution, 256, kLightSpaceResolutionNames, "Light-space map resolution");
         v.field("opacityEarlyExit", opacityEarlyExit, "Opacity early exit");
         v.field("visibilityCulling", visibilityCulling, "Visibility culling");

@@ -247,7 +247,7 @@ void Clouds::drawShaded(FrameContext& frame, const ParticleTables& tables, Atmos
     c.scattering = glm::vec4(static_cast<float>(scatteringParameters_.entryAngles), static_cast<float>(scatteringParameters_.viewAzimuths),
                              static_cast<float>(scatteringParameters_.viewZeniths), static_cast<float>(scatteringParameters_.opticalRadii));
     c.light = glm::vec4(static_cast<float>(scatteringParameters_.firstOpticalRadius), static_cast<float>(settings.multipleScattering),
-                        static_cast<float>(deckParameters_.thinnest), 0.0f);
+                        static_cast<float>(deckParameters_.thinnest), static_cast<float>(settings.lightTerms));
     c.deck = glm::vec4(static_cast<float>(deckParameters_.cosines), static_cast<float>(deckParameters_.depths), static_cast<float>(deckParameters_.thicknesses),
                        static_cast<float>(deckParameters_.thicknessesPerOctave));
     ID3D11RenderTargetView* hdr = frame.targets.hdr().rtv.Get();

@@ -23,8 +23,8 @@ void clouds(PanelContext& panel) {
     if (c.enabled && a.comparison != ModelComparison::None) ImGui::TextDisabled("The clouds are drawn with one atmosphere model, not a comparison");
     editSettings(panel, "clouds", {"showParticles", "particleDensity"});
     ImGui::SeparatorText("Rendering");
-    editSettings(panel, "clouds", {"volumetricBlending", "blendingPath", "downscale", "lightOcclusion", "multipleScattering", "lightSpaceResolution",
-                                    "opacityEarlyExit", "visibilityCulling"});
+    editSettings(panel, "clouds", {"volumetricBlending", "blendingPath", "downscale", "lightOcclusion", "multipleScattering", "lightTerms",
+                                    "lightSpaceResolution", "opacityEarlyExit", "visibilityCulling"});
     if (c.enabled && !panel.model.cloudBlending.empty()) ImGui::TextWrapped("Running: %s", panel.model.cloudBlending.c_str());
     if (const std::optional<double> progress = panel.model.cloudTableProgress)
         ImGui::TextDisabled("Computing the particle tables: %.0f%%", *progress * 100.0);
